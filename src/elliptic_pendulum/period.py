@@ -1,0 +1,339 @@
+"""Periods of the simple pendulum: (8), (26), the ratio R of section 4 and where it crosses a value.
+
+The small-angle period is (8), :math:`P_\\ell = 2\\pi/\\omega_0`; a libration (regime II) of
+amplitude :math:`\\theta_0` has the period (26), :math:`P_{II} = 4 K_1(\\sin(\\theta_0/2))/\\omega_0`,
+and section 4 of the note tabulates their ratio
+:math:`R(\\theta_0) = (2/\\pi) K_1(\\sin(\\theta_0/2))`.
+
+Amplitudes are in radians, in :math:`[0, \\pi)`. Near :math:`\\theta_0 = \\pi` the modulus
+:math:`\\sin(\\theta_0/2)` rounds to 1 while :math:`K_1` grows like :math:`\\log(4/k_c)`, so every
+function here hands the complementary modulus :math:`k_c = \\cos(\\theta_0/2)` to
+:func:`~elliptic_pendulum.elliptic.complete_integral` instead of forming :math:`1 - \\sin^2`.
+"""
+
+from __future__ import annotations
+
+import math
+import numbers
+
+import numpy as np
+from scipy import optimize
+
+from .elliptic import complete_integral
+
+__all__ = ["agm_period", "crossing_angle", "period", "period_ratio", "small_angle_period"]
+
+# pi - np.pi: the part of pi a double cannot hold. Adding it back turns a distance x from the
+# true pi into the correctly rounded amplitude pi - x, which matters within 1e-9 degrees of 180.
+_PI_LO = 1.2246467991473532e-16
+# The largest amplitude below pi that a double holds; R there is about 23.5, the largest R whose
+# crossing angle this module can resolve.
+_LARGEST_AMPLITUDE = math.nextafter(math.pi, 0.0)
+
+
+def _real_array(value, name):
+    """Return ``value`` as a float array, or raise TypeError naming ``name``."""
+    if isinstance(value, (str, bytes)):
+        raise TypeError(f"{name} must be a real number or an array of real numbers, not {value!r}")
+    array = np.asarray(value)
+    if array.dtype == bool or array.dtype.kind in "USOcmMV":
+        if array.dtype.kind == "O":
+            # Objects such as fractions.Fraction or mpmath numbers are welcome if they are real.
+            try:
+                return np.asarray(array, dtype=float)
+            except (TypeError, ValueError):
+                pass
+        raise TypeError(f"{name} must be a real number or an array of real numbers, not {value!r}")
+    return array.astype(float, copy=False)
+
+
+def _finite(array, name, valid):
+    if not np.all(np.isfinite(array)):
+        raise ValueError(f"{name} must be finite ({valid}); got {array.tolist()!r}")
+
+
+def _amplitudes(theta0):
+    theta0 = _real_array(theta0, "theta0")
+    valid = "an amplitude in radians with 0 <= theta0 < pi"
+    _finite(theta0, "theta0", valid)
+    # The double np.pi lies 1.2e-16 below pi, but whoever passes it means the inverted pendulum,
+    # whose period (regime III) is infinite, so it is refused with pi itself.
+    if np.any((theta0 < 0) | (theta0 >= math.pi)):
+        raise ValueError(f"theta0 must be {valid}; got {theta0.tolist()!r}")
+    return theta0
+
+
+def _angular_frequency(omega0):
+    if isinstance(omega0, bool) or not isinstance(omega0, numbers.Real):
+        raise TypeError(f"omega0 must be a positive real number, not {omega0!r}")
+    omega0 = float(omega0)
+    if not (math.isfinite(omega0) and omega0 > 0):
+        raise ValueError(f"omega0 must be a positive finite number (0 < omega0 < inf); got {omega0}")
+    return omega0
+
+
+def _out(array):
+    return float(array) if np.ndim(array) == 0 else array
+
+
+def period_ratio(theta0):
+    r"""Ratio R of the period of a swing of amplitude theta0 to the small-angle period.
+
+    .. math:: R(\theta_0) = \frac{K_1(\sin(\theta_0/2))}{K_1(0)}
+              = \frac{2}{\pi} K_1\!\left(\sin\frac{\theta_0}{2}\right)
+
+    the quotient of (26) by (8), tabulated in section 4 of the note.
+
+    Parameters
+    ----------
+    theta0 : float or array_like
+        Amplitude in radians, ``0 <= theta0 < pi``.
+
+    Returns
+    -------
+    float or ndarray
+        :math:`R(\theta_0) \ge 1`, of the shape of ``theta0``.
+
+    Raises
+    ------
+    ValueError
+        If an amplitude is negative, not finite, or ``>= pi`` (``np.pi`` included: the
+        inverted pendulum never returns).
+    TypeError
+        If ``theta0`` is not real.
+
+    See Also
+    --------
+    period : the period (26) itself.
+    agm_period : the same period by the arithmetic-geometric mean.
+    crossing_angle : the inverse function.
+
+    Notes
+    -----
+    The complementary modulus :math:`k_c = \cos(\theta_0/2)` is passed to
+    :func:`~elliptic_pendulum.elliptic.complete_integral`; it carries the distance to the top
+    in full precision, so R is accurate to a few ulp even 1e-9 degrees below 180 degrees.
+
+    Examples
+    --------
+    The note's table (section 4), to its three decimals:
+
+    >>> import numpy as np
+    >>> degrees = [30, 45, 60, 90, 120, 135, 150]
+    >>> np.round(period_ratio(np.radians(degrees)), 3).tolist()
+    [1.017, 1.04, 1.073, 1.18, 1.373, 1.528, 1.762]
+
+    Small swings keep the period (8), and the series
+    :math:`R = 1 + \theta_0^2/16 + 11\theta_0^4/3072 + \dots` (DLMF 19.5.1) fits:
+
+    >>> period_ratio(0.0)
+    1.0
+    >>> a = 0.01
+    >>> abs(period_ratio(a) - (1 + a**2 / 16 + 11 * a**4 / 3072)) < 1e-13
+    True
+
+    Near the top R grows like :math:`(2/\pi)\log(8/(\pi - \theta_0))` (DLMF 19.12.1):
+
+    >>> x = 2.0**-30  # np.pi - x is exact, and pi lies 1.2246e-16 above np.pi
+    >>> distance = x + 1.2246467991473532e-16
+    >>> bool(abs(period_ratio(np.pi - x) - 2 / np.pi * np.log(8 / distance)) < 1e-14)
+    True
+    """
+    theta0 = _amplitudes(theta0)
+    half = 0.5 * theta0
+    k_integral = complete_integral(np.sin(half), kc=np.cos(half))
+    # Dividing by the double pi/2 (not multiplying by 2/pi) gives R(0) == 1.0 exactly.
+    return _out(np.asarray(k_integral) / (0.5 * math.pi))
+
+
+def small_angle_period(omega0):
+    r"""Period (8) of the linearised pendulum (5).
+
+    .. math:: P_\ell = \frac{2\pi}{\omega_0} = 2\pi\sqrt{\frac{\ell}{g}}
+
+    Parameters
+    ----------
+    omega0 : float
+        Angular frequency (6), :math:`\omega_0 = \sqrt{g/\ell} > 0`, in rad/s.
+
+    Returns
+    -------
+    float
+        The period in seconds.
+
+    Examples
+    --------
+    A one-metre pendulum beats close to seconds, which is how the metre was once proposed:
+
+    >>> import math
+    >>> round(small_angle_period(math.sqrt(9.80665 / 1.0)), 4)
+    2.0064
+    """
+    return 2 * math.pi / _angular_frequency(omega0)
+
+
+def period(theta0, omega0=1.0):
+    r"""Period (26) of a libration (regime II) of amplitude theta0.
+
+    .. math:: P_{II} = \frac{4}{\omega_0} K_1\!\left(\sin\frac{\theta_0}{2}\right)
+              = 4 K_1\!\left(\sin\frac{\theta_0}{2}\right)\sqrt{\frac{\ell}{g}}
+
+    Parameters
+    ----------
+    theta0 : float or array_like
+        Amplitude in radians, ``0 <= theta0 < pi``.
+    omega0 : float, optional
+        Angular frequency (6), positive; default 1.
+
+    Returns
+    -------
+    float or ndarray
+        The period, of the shape of ``theta0``.
+
+    See Also
+    --------
+    period_ratio, agm_period, small_angle_period
+
+    Examples
+    --------
+    At amplitude 0 it is the period (8); a swing of 90 degrees takes 18% longer:
+
+    >>> import numpy as np
+    >>> period(0.0, omega0=2.0) == small_angle_period(2.0)
+    True
+    >>> round(period(np.pi / 2) / (2 * np.pi), 3)
+    1.18
+    """
+    omega0 = _angular_frequency(omega0)
+    return _out(period_ratio(theta0) * (2 * math.pi / omega0))
+
+
+def _agm(a, b):
+    """Arithmetic-geometric mean of arrays ``a >= b > 0``, elementwise."""
+    a, b = np.broadcast_arrays(np.asarray(a, float), np.asarray(b, float))
+    a, b = a.copy(), b.copy()
+    # Quadratic convergence: from b/a = 1e-17 about 8 steps reach full precision. Rounding can
+    # make a and b trade the last ulp forever, hence the tolerance and the cap.
+    for _ in range(64):
+        if np.all(np.abs(a - b) <= 4 * np.finfo(float).eps * a):
+            break
+        a, b = 0.5 * (a + b), np.sqrt(a * b)
+    return 0.5 * (a + b)
+
+
+def agm_period(theta0, omega0=1.0):
+    r"""Period (26) by Gauss's arithmetic-geometric mean, an independent check of (26).
+
+    .. math:: P_{II} = \frac{2\pi}{\omega_0\,\mathrm{AGM}(1, \cos(\theta_0/2))}
+
+    since :math:`K_1(k) = \pi / (2\,\mathrm{AGM}(1, k_c))` (DLMF 19.8.5).
+
+    Parameters
+    ----------
+    theta0 : float or array_like
+        Amplitude in radians, ``0 <= theta0 < pi``.
+    omega0 : float, optional
+        Angular frequency (6), positive; default 1.
+
+    Returns
+    -------
+    float or ndarray
+        The period, of the shape of ``theta0``.
+
+    Notes
+    -----
+    The AGM is iterated in NumPy on the whole array: :math:`a_{n+1} = (a_n + b_n)/2`,
+    :math:`b_{n+1} = \sqrt{a_n b_n}` from :math:`a_0 = 1, b_0 = \cos(\theta_0/2)`. It shares no
+    code with :func:`~elliptic_pendulum.elliptic.complete_integral`.
+
+    Examples
+    --------
+    It agrees with (26) to rounding, also close to the top:
+
+    >>> import numpy as np
+    >>> theta0 = np.radians([1, 30, 90, 150, 179.9999])
+    >>> bool(np.allclose(agm_period(theta0), period(theta0), rtol=1e-14, atol=0))
+    True
+    """
+    theta0 = _amplitudes(theta0)
+    omega0 = _angular_frequency(omega0)
+    return _out(2 * math.pi / (omega0 * _agm(1.0, np.cos(0.5 * theta0))))
+
+
+def _ratio_near_top(x):
+    """R at the amplitude pi - x, for a distance 0 < x <= pi from the (true) top."""
+    # cos((pi - x)/2) = sin(x/2) keeps every digit of the small complementary modulus.
+    return float(complete_integral(math.cos(0.5 * x), kc=math.sin(0.5 * x))) / (0.5 * math.pi)
+
+
+def crossing_angle(value):
+    r"""The amplitude at which the period ratio R reaches a given value.
+
+    Solves :math:`R(\theta_0) = \frac{2}{\pi} K_1(\sin(\theta_0/2)) = v` for
+    :math:`\theta_0 \in [0, \pi)`; section 4 of the note says R exceeds 2, 3 and 4 near
+    160, 176 and 179.2 degrees.
+
+    Parameters
+    ----------
+    value : float or array_like
+        Target ratio(s) :math:`v \ge 1`. R(0) = 1, so ``value == 1`` gives 0.
+
+    Returns
+    -------
+    float or ndarray
+        The amplitude(s) in radians, of the shape of ``value``.
+
+    Raises
+    ------
+    ValueError
+        If a value is below 1, not finite, or so large (above about 23.5) that its amplitude
+        lies closer to pi than the spacing of doubles there.
+
+    Notes
+    -----
+    R increases from 1 to infinity on :math:`[0, \pi)`, so there is one root;
+    :func:`scipy.optimize.brentq` finds it in the distance :math:`x = \pi - \theta_0` from the
+    top, where :math:`k_c = \sin(x/2)` and the relative tolerance apply to x itself, and the
+    amplitude is then rounded from :math:`\pi - x` with pi's lost low-order bits added back.
+
+    Examples
+    --------
+    The exact crossing angles, in degrees:
+
+    >>> import numpy as np
+    >>> [round(float(d), 9) for d in np.degrees(crossing_angle([2, 3, 4]))]
+    [159.753875718, 175.876521811, 179.143956246]
+
+    The note read them off a grid, reporting the first grid angle past the crossing
+    (1 degree steps, then 0.1 degree):
+
+    >>> r = period_ratio(np.radians([159, 160, 175, 176, 179.1, 179.2]))
+    >>> bool(r[0] < 2 < r[1] and r[2] < 3 < r[3] and r[4] < 4 < r[5])
+    True
+    """
+    values = _real_array(value, "value")
+    _finite(values, "value", "a period ratio >= 1")
+    largest = _ratio_near_top(math.pi - _LARGEST_AMPLITUDE + _PI_LO)
+    if np.any((values < 1) | (values > largest)):
+        raise ValueError(
+            f"value must be a period ratio with 1 <= value <= {largest:.4f} (beyond that the "
+            f"amplitude is closer to pi than doubles resolve); got {values.tolist()!r}"
+        )
+    lowest = math.pi - _LARGEST_AMPLITUDE + _PI_LO
+    angles = np.empty(values.shape)
+    for index, target in np.ndenumerate(values):
+        if target == 1.0:
+            angles[index] = 0.0
+            continue
+        if target == largest:
+            angles[index] = _LARGEST_AMPLITUDE
+            continue
+        x = optimize.brentq(
+            lambda x, target=target: _ratio_near_top(x) - target,
+            lowest,
+            math.pi,
+            xtol=1e-300,
+            rtol=4 * np.finfo(float).eps,
+        )
+        angles[index] = (math.pi - x) + _PI_LO
+    return _out(angles)
