@@ -1,0 +1,62 @@
+# Entry points of elliptic-pendulum. Every target creates the virtual environment first,
+# so on a fresh machine `make book` and `make test` are the only set-up commands.
+#
+#   make book         HTML book in book/_build/html (myst-nb cache: unchanged cells are not re-run)
+#   make book-strict  the same from clean, every notebook re-executed (what CI checks)
+#   make docs         API/reference site in docs/_build/html
+#   make notebooks    classroom notebooks in notebooks/, executed in a fresh kernel
+#   make bench        speed and accuracy tables
+#   make test         everything: unit, property and doctests, book and docs builds,
+#                     notebook execution, headless-Chromium check (see tests/)
+#   make lint         ruff and mypy
+
+PYTHON ?= python3
+VENV   := .venv
+PY     := $(VENV)/bin/python
+STAMP  := $(VENV)/.installed
+SPHINX := $(PY) -m sphinx -n -W --keep-going
+
+# The notebook kernels and sphinx-build must see the venv (the package is installed there,
+# the kernel does not see conf.py's sys.path).
+export PATH := $(CURDIR)/$(VENV)/bin:$(PATH)
+# Opt in to Jupyter's platformdirs layout now, which also silences its migration warning.
+export JUPYTER_PLATFORM_DIRS := 1
+
+.PHONY: venv book book-strict docs notebooks bench test lint clean
+
+venv: $(STAMP)
+
+# Reinstall only when the dependencies change; `-e` makes edits in src/ visible at once.
+$(STAMP): pyproject.toml
+	test -x $(PY) || $(PYTHON) -m venv $(VENV)
+	$(PY) -m pip install --quiet --upgrade pip
+	$(PY) -m pip install --quiet -e ".[test,book,dev]"
+	touch $@
+
+book: $(STAMP)
+	$(SPHINX) -b html book book/_build/html
+
+book-strict: $(STAMP)
+	$(SPHINX) -E -D nb_execution_mode=force -b html book book/_build/html
+
+docs: $(STAMP)
+	$(SPHINX) -b html docs docs/_build/html
+
+notebooks: $(STAMP)
+	$(PY) tools/export_notebooks.py book notebooks --execute
+
+bench: $(STAMP)
+	$(PY) benchmarks/bench_theta.py
+
+# pytest runs it all, configured in pyproject.toml: tests/ (including the book build with
+# forced execution, the docs build, the notebooks and the browser check) and the doctests
+# of src/, book/*.md, docs/*.md and README.md.
+test: $(STAMP)
+	$(PY) -m pytest
+
+lint: $(STAMP)
+	$(PY) -m ruff check src tests tools
+	$(PY) -m mypy
+
+clean:
+	rm -rf book/_build docs/_build notebooks .pytest_cache
