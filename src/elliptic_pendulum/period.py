@@ -14,11 +14,11 @@ function here hands the complementary modulus :math:`k_c = \\cos(\\theta_0/2)` t
 from __future__ import annotations
 
 import math
-import numbers
 
 import numpy as np
 from scipy import optimize
 
+from ._validation import positive_scalar, real_array
 from .elliptic import complete_integral
 
 __all__ = ["agm_period", "crossing_angle", "period", "period_ratio", "small_angle_period"]
@@ -26,36 +26,22 @@ __all__ = ["agm_period", "crossing_angle", "period", "period_ratio", "small_angl
 # pi - np.pi: the part of pi a double cannot hold. Adding it back turns a distance x from the
 # true pi into the correctly rounded amplitude pi - x, which matters within 1e-9 degrees of 180.
 _PI_LO = 1.2246467991473532e-16
-# The largest amplitude below pi that a double holds; R there is about 23.5, the largest R whose
-# crossing angle this module can resolve.
-_LARGEST_AMPLITUDE = math.nextafter(math.pi, 0.0)
+# Distance to pi of the largest double below it; R there (23.67) is the largest R whose
+# crossing angle a double resolves.
+_SMALLEST_DISTANCE = math.pi - math.nextafter(math.pi, 0.0) + _PI_LO
 
 
-def _real_array(value, name):
-    """Return ``value`` as a float array, or raise TypeError naming ``name``."""
-    if isinstance(value, (str, bytes)):
-        raise TypeError(f"{name} must be a real number or an array of real numbers, not {value!r}")
-    array = np.asarray(value)
-    if array.dtype == bool or array.dtype.kind in "USOcmMV":
-        if array.dtype.kind == "O":
-            # Objects such as fractions.Fraction or mpmath numbers are welcome if they are real.
-            try:
-                return np.asarray(array, dtype=float)
-            except (TypeError, ValueError):
-                pass
-        raise TypeError(f"{name} must be a real number or an array of real numbers, not {value!r}")
-    return array.astype(float, copy=False)
-
-
-def _finite(array, name, valid):
-    if not np.all(np.isfinite(array)):
-        raise ValueError(f"{name} must be finite ({valid}); got {array.tolist()!r}")
+def _checked(value, name, valid):
+    """``value`` as a finite float array; a NaN or infinity is reported with the valid range."""
+    try:
+        return real_array(value, name)
+    except ValueError:
+        raise ValueError(f"{name} must be {valid}; got {value!r}") from None
 
 
 def _amplitudes(theta0):
-    theta0 = _real_array(theta0, "theta0")
     valid = "an amplitude in radians with 0 <= theta0 < pi"
-    _finite(theta0, "theta0", valid)
+    theta0 = _checked(theta0, "theta0", valid)
     # The double np.pi lies 1.2e-16 below pi, but whoever passes it means the inverted pendulum,
     # whose period (regime III) is infinite, so it is refused with pi itself.
     if np.any((theta0 < 0) | (theta0 >= math.pi)):
@@ -63,16 +49,7 @@ def _amplitudes(theta0):
     return theta0
 
 
-def _angular_frequency(omega0):
-    if isinstance(omega0, bool) or not isinstance(omega0, numbers.Real):
-        raise TypeError(f"omega0 must be a positive real number, not {omega0!r}")
-    omega0 = float(omega0)
-    if not (math.isfinite(omega0) and omega0 > 0):
-        raise ValueError(f"omega0 must be a positive finite number (0 < omega0 < inf); got {omega0}")
-    return omega0
-
-
-def _out(array):
+def _out(array):  # Python floats for scalars: NumPy 2 prints np.float64(...) in doctests
     return float(array) if np.ndim(array) == 0 else array
 
 
@@ -97,10 +74,7 @@ def period_ratio(theta0):
     Raises
     ------
     ValueError
-        If an amplitude is negative, not finite, or ``>= pi`` (``np.pi`` included: the
-        inverted pendulum never returns).
-    TypeError
-        If ``theta0`` is not real.
+        If an amplitude is negative, not finite, or ``>= pi`` (``np.pi`` too: regime III).
 
     See Also
     --------
@@ -169,7 +143,7 @@ def small_angle_period(omega0):
     >>> round(small_angle_period(math.sqrt(9.80665 / 1.0)), 4)
     2.0064
     """
-    return 2 * math.pi / _angular_frequency(omega0)
+    return 2 * math.pi / positive_scalar(omega0, "omega0")
 
 
 def period(theta0, omega0=1.0):
@@ -190,10 +164,6 @@ def period(theta0, omega0=1.0):
     float or ndarray
         The period, of the shape of ``theta0``.
 
-    See Also
-    --------
-    period_ratio, agm_period, small_angle_period
-
     Examples
     --------
     At amplitude 0 it is the period (8); a swing of 90 degrees takes 18% longer:
@@ -204,7 +174,7 @@ def period(theta0, omega0=1.0):
     >>> round(period(np.pi / 2) / (2 * np.pi), 3)
     1.18
     """
-    omega0 = _angular_frequency(omega0)
+    omega0 = positive_scalar(omega0, "omega0")
     return _out(period_ratio(theta0) * (2 * math.pi / omega0))
 
 
@@ -256,7 +226,7 @@ def agm_period(theta0, omega0=1.0):
     True
     """
     theta0 = _amplitudes(theta0)
-    omega0 = _angular_frequency(omega0)
+    omega0 = positive_scalar(omega0, "omega0")
     return _out(2 * math.pi / (omega0 * _agm(1.0, np.cos(0.5 * theta0))))
 
 
@@ -286,7 +256,7 @@ def crossing_angle(value):
     Raises
     ------
     ValueError
-        If a value is below 1, not finite, or so large (above about 23.5) that its amplitude
+        If a value is below 1, not finite, or so large (above 23.67) that its amplitude
         lies closer to pi than the spacing of doubles there.
 
     Notes
@@ -311,29 +281,17 @@ def crossing_angle(value):
     >>> bool(r[0] < 2 < r[1] and r[2] < 3 < r[3] and r[4] < 4 < r[5])
     True
     """
-    values = _real_array(value, "value")
-    _finite(values, "value", "a period ratio >= 1")
-    largest = _ratio_near_top(math.pi - _LARGEST_AMPLITUDE + _PI_LO)
+    values = _checked(value, "value", "a finite period ratio >= 1")
+    largest = _ratio_near_top(_SMALLEST_DISTANCE)
     if np.any((values < 1) | (values > largest)):
         raise ValueError(
             f"value must be a period ratio with 1 <= value <= {largest:.4f} (beyond that the "
             f"amplitude is closer to pi than doubles resolve); got {values.tolist()!r}"
         )
-    lowest = math.pi - _LARGEST_AMPLITUDE + _PI_LO
-    angles = np.empty(values.shape)
+    angles = np.zeros(values.shape)  # R(0) = 1 exactly: value 1 keeps its 0
     for index, target in np.ndenumerate(values):
-        if target == 1.0:
-            angles[index] = 0.0
-            continue
-        if target == largest:
-            angles[index] = _LARGEST_AMPLITUDE
-            continue
-        x = optimize.brentq(
-            lambda x, target=target: _ratio_near_top(x) - target,
-            lowest,
-            math.pi,
-            xtol=1e-300,
-            rtol=4 * np.finfo(float).eps,
-        )
-        angles[index] = (math.pi - x) + _PI_LO
+        if target > 1.0:
+            x = optimize.brentq(lambda x, v=target: _ratio_near_top(x) - v, _SMALLEST_DISTANCE,
+                                math.pi, xtol=1e-300, rtol=4 * np.finfo(float).eps)
+            angles[index] = (math.pi - x) + _PI_LO
     return _out(angles)
