@@ -1,0 +1,93 @@
+"""Input checks shared by the public functions.
+
+Every public function turns its arguments into float arrays here, so that a
+bad argument is reported once, in words a student can act on, and never
+travels on as a silent NaN.
+"""
+
+from __future__ import annotations
+
+import numbers
+from typing import Any
+
+import numpy as np
+
+__all__ = ["real_array", "modulus_pair", "positive_scalar", "scalar_or_array"]
+
+
+def real_array(value: Any, name: str) -> np.ndarray:
+    """Return ``value`` as a finite float array, or raise naming ``name``.
+
+    Booleans, strings, complex numbers and None are refused with TypeError
+    (``True`` as a time or an angle is almost always a mistake); NaN and
+    infinities with ValueError.
+    """
+    if isinstance(value, (bool, np.bool_, str, bytes)) or value is None:
+        raise TypeError(f"{name} must be a real number or an array of real numbers, "
+                        f"got {type(value).__name__}")
+    try:
+        arr = np.asarray(value)
+    except Exception as exc:  # ragged sequences and the like
+        raise TypeError(f"{name} must be a real number or an array of real numbers") from exc
+    if arr.dtype.kind == "O":
+        # Decimal, Fraction, mpmath.mpf: accept what converts to float.
+        try:
+            arr = arr.astype(float)
+        except (TypeError, ValueError) as exc:
+            raise TypeError(f"{name} must be a real number or an array of real numbers, "
+                            f"got {type(value).__name__}") from exc
+    if arr.dtype.kind not in "iuf":
+        raise TypeError(f"{name} must be a real number or an array of real numbers, "
+                        f"got values of dtype {arr.dtype}")
+    arr = arr.astype(float, copy=False)
+    if not np.all(np.isfinite(arr)):
+        raise ValueError(f"{name} must be finite (no NaN or infinity)")
+    return arr
+
+
+def modulus_pair(k: Any, kc: Any = None) -> tuple[np.ndarray, np.ndarray]:
+    """Return (k, kc) as arrays, both checked to lie in [0, 1].
+
+    When ``kc`` is given it is trusted over ``k``: near the separatrix k
+    rounds to 1.0 while kc = sqrt(1 - k^2) still holds every digit, so only
+    kc drives the algorithms that are sensitive there.
+    """
+    if kc is None:
+        k = real_array(k, "k")
+        if np.any((k < 0) | (k > 1)):
+            raise ValueError("k (the modulus) must lie in [0, 1]; "
+                             "for k > 1 use the reciprocal modulus 1/k")
+        # (1-k)(1+k) rather than 1-k*k: exact when k is near 1.
+        return k, np.sqrt((1.0 - k) * (1.0 + k))
+    kc = real_array(kc, "kc")
+    if np.any((kc < 0) | (kc > 1)):
+        raise ValueError("kc (the complementary modulus sqrt(1 - k**2)) must lie in [0, 1]")
+    if k is None:
+        k = np.sqrt((1.0 - kc) * (1.0 + kc))
+    else:
+        k = real_array(k, "k")
+        if np.any((k < 0) | (k > 1)):
+            raise ValueError("k (the modulus) must lie in [0, 1]")
+    return k, kc
+
+
+def positive_scalar(value: Any, name: str) -> float:
+    """Return ``value`` as a finite float > 0, or raise naming ``name``."""
+    if not isinstance(value, numbers.Real) or isinstance(value, bool):
+        if not (isinstance(value, np.ndarray) and value.ndim == 0):
+            raise TypeError(f"{name} must be a real number, got {type(value).__name__}")
+    x = float(value)
+    if not np.isfinite(x) or x <= 0:
+        raise ValueError(f"{name} must be a finite number > 0, got {x!r}")
+    return x
+
+
+def scalar_or_array(result: np.ndarray, *inputs: np.ndarray) -> Any:
+    """Return a Python float when every input was a scalar, else the array.
+
+    Python floats print as ``1.0`` under NumPy 2 (not ``np.float64(1.0)``),
+    which keeps doctests and the book's glued numbers plain.
+    """
+    if all(np.ndim(x) == 0 for x in inputs):
+        return float(result)
+    return result
