@@ -37,8 +37,10 @@ def _two_product(x, y):
 def _validate(f, a):
     if not callable(f):
         raise TypeError(f"f must be a callable (a vectorized odd function on [-a, a]), got {f!r}")
-    hi, lo = (a if isinstance(a, tuple) else (a, 0.0))
-    hi, lo = float(hi), float(lo)
+    try:
+        hi, lo = (float(a[0]), float(a[1])) if isinstance(a, tuple) else (float(a), 0.0)
+    except (TypeError, ValueError, IndexError):
+        raise TypeError(f"a must be a real number (or a pair (hi, lo)), got {a!r}") from None
     if not (np.isfinite(hi) and np.isfinite(lo) and hi > 0.0 and abs(lo) <= 1e-8 * hi):
         raise ValueError(f"a must be a finite number > 0 (or a pair (hi, lo) with hi > 0 and "
                          f"|lo| <= 1e-8 hi), got a = {a!r}")
