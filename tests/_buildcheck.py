@@ -1,0 +1,53 @@
+"""Checks shared by the book and docs build tests."""
+
+from __future__ import annotations
+
+import re
+from html.parser import HTMLParser
+from pathlib import Path
+
+
+class _External(HTMLParser):
+    def __init__(self) -> None:
+        super().__init__()
+        self.found: list[str] = []
+
+    def handle_starttag(self, tag: str, attrs: list[tuple[str, str | None]]) -> None:
+        wanted = {"script": "src", "link": "href"}.get(tag)
+        for key, value in attrs:
+            if key == wanted and value and re.match(r"^(https?:)?//", value.strip()):
+                self.found.append(f"<{tag} {key}={value}>")
+
+
+def external_resources(html_dir: Path) -> dict[str, list[str]]:
+    """Map each built page to the scripts and stylesheets it would load from the network."""
+    result = {}
+    for page in sorted(html_dir.rglob("*.html")):
+        if "_static" in page.parts:
+            continue
+        parser = _External()
+        parser.feed(page.read_text(encoding="utf-8"))
+        if parser.found:
+            result[str(page.relative_to(html_dir))] = parser.found
+    return result
+
+
+def toctree_entries(source: Path) -> list[str]:
+    """The documents named in the {toctree} directives of the source pages."""
+    entries = []
+    for page in sorted(source.glob("*.md")):
+        text = page.read_text(encoding="utf-8")
+        for block in re.findall(r"^(`{3,}|:{3,})\{toctree\}[^\n]*\n(.*?)^\1\s*$", text, re.M | re.S):
+            for line in block[1].splitlines():
+                line = line.strip()
+                if not line or line.startswith(":"):
+                    continue
+                match = re.search(r"<([^>]+)>$", line)
+                entries.append((match.group(1) if match else line).removesuffix(".md"))
+    return entries
+
+
+def pages_with_math(html_dir: Path) -> list[Path]:
+    """The built pages that contain math (Sphinx adds the MathJax script only to those)."""
+    return [p for p in sorted(html_dir.rglob("*.html"))
+            if "_static" not in p.parts and 'class="math' in p.read_text(encoding="utf-8")]

@@ -1,0 +1,35 @@
+"""The book builds from clean, every notebook re-executed, with no warning and no network."""
+
+from __future__ import annotations
+
+import pytest
+from _buildcheck import external_resources, pages_with_math, toctree_entries
+from conftest import BOOK, Build
+
+pytestmark = pytest.mark.slow
+
+
+def test_book_builds_without_warnings(book_build: Build) -> None:
+    print(f"\nbook build (from clean, forced execution): {book_build.seconds:.1f} s")
+    assert book_build.returncode == 0, book_build.output[-8000:]
+    assert book_build.warnings == [], "\n".join(book_build.warnings)
+
+
+def test_book_loads_nothing_from_the_network(built_book) -> None:
+    assert external_resources(built_book) == {}
+
+
+def test_book_serves_mathjax_itself(built_book) -> None:
+    # conf.py points mathjax_path at the copy shipped by sphinx-mathjax-offline.
+    assert (built_book / "_static" / "mathjax" / "tex-chtml.js").is_file()
+    pages = pages_with_math(built_book)
+    assert pages, "no page with math to check"
+    for page in pages:
+        assert "_static/mathjax/tex-chtml.js" in page.read_text(encoding="utf-8"), page.name
+
+
+def test_every_toctree_page_is_built(built_book) -> None:
+    entries = toctree_entries(BOOK)
+    assert entries, "the book's index has no toctree"
+    missing = [e for e in ["index", *entries] if not (built_book / f"{e}.html").is_file()]
+    assert missing == []
