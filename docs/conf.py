@@ -1,0 +1,82 @@
+"""Sphinx configuration of the reference site (API, conventions, CLI)."""
+
+from __future__ import annotations
+
+import importlib.util
+from pathlib import Path
+
+project = "elliptic-pendulum"
+author = "elliptic-pendulum contributors"
+copyright = "2024-2026, elliptic-pendulum contributors"
+release = version = "0.1.0"
+
+extensions = [
+    "myst_parser",
+    "sphinx.ext.autodoc",
+    "sphinx.ext.autosummary",
+    # The docstrings are numpydoc style (STYLE.md); napoleon reads them without the
+    # stricter numpydoc extension, whose section checks would duplicate ruff's D rules.
+    "sphinx.ext.napoleon",
+    "sphinx.ext.doctest",
+    "sphinx_book_theme",
+]
+
+myst_enable_extensions = ["dollarmath", "amsmath", "colon_fence", "deflist"]
+myst_heading_anchors = 3
+
+napoleon_google_docstring = False
+napoleon_numpy_docstring = True
+napoleon_use_rtype = False
+napoleon_preprocess_types = True
+# numpydoc "Attributes" sections as :ivar: fields: as directives they would document the
+# dataclass fields a second time next to autodoc's own entries (duplicate object warnings).
+napoleon_use_ivar = True
+# Short names of our own classes in docstring types, resolved to where they are documented.
+napoleon_type_aliases = {
+    "Regime": "~elliptic_pendulum.regimes.Regime",
+    "Motion": "~elliptic_pendulum.motion.Motion",
+    "Pendulum": "~elliptic_pendulum.mechanics.Pendulum",
+}
+
+autodoc_typehints = "description"
+autodoc_member_order = "bysource"
+autodoc_default_options = {"members": True, "undoc-members": False, "show-inheritance": True}
+
+exclude_patterns = ["_build", "**.ipynb_checkpoints", "Thumbs.db", ".DS_Store"]
+
+# --- Nitpicky references without the network -------------------------------------------
+# intersphinx would fetch objects.inv from python.org, numpy.org and scipy.org, and the
+# builds run offline; so references to types defined outside this package cannot resolve.
+# Ignore exactly those, nothing of our own: a broken reference inside elliptic_pendulum
+# still fails the build.
+nitpick_ignore = [
+    ("py:class", "array_like"),
+    ("py:class", "array-like"),
+    ("py:class", "ArrayLike"),
+    ("py:class", "optional"),
+    ("py:class", "callable"),
+    # napoleon splits the numpydoc tuple type "(float, float)" into these two tokens
+    ("py:class", "(float"),
+    ("py:class", "float)"),
+]
+nitpick_ignore_regex = [
+    # builtins and typing spelled in docstrings and annotations (float, int, ...)
+    (r"py:(class|obj|data)", r"(builtins\.)?(float|int|bool|str|complex|tuple|list|dict|None|object|type)"),
+    (r"py:(class|obj|data)", r"(typing|collections\.abc|types|enum|dataclasses|fractions|decimal)\..*"),
+    # third-party types: numpy, scipy, sympy, matplotlib
+    (r"py:(class|obj|data|func|mod|meth|attr)", r"(numpy|np|numpy\.typing|npt|scipy|sympy|sp|matplotlib|mpmath)(\..*)?"),
+    (r"py:(class|obj)", r"(ndarray|NDArray|Axes|Figure|Expr|Symbol|Eq|Basic|ArrayLike)(\[.*\])?"),
+    (r"py:(class|obj)", r"(numpy\.)?float64"),
+]
+
+# --- Offline MathJax (see book/conf.py for the reasoning) --------------------------------
+_mathjax_spec = importlib.util.find_spec("sphinx-mathjax-offline")
+if _mathjax_spec is None or _mathjax_spec.origin is None:
+    raise RuntimeError("The offline MathJax files are missing: `pip install -e '.[book]'`.")
+mathjax_path = "mathjax/tex-chtml.js"
+
+html_theme = "sphinx_book_theme"
+html_title = "elliptic-pendulum reference"
+html_static_path = ["_static", str(Path(_mathjax_spec.origin).parent / "static")]
+html_theme_options = {"show_toc_level": 2}
+html_last_updated_fmt = None
