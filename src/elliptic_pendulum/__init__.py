@@ -10,11 +10,15 @@ The public API (re-exports only; see each module for the mathematics):
 
 from .elliptic import (am, cn, complete_integral, dn, incomplete_integral,
                        inverse_integral, jacobi, sn)
+from .mechanics import Pendulum
 from .motion import Motion, solve
+from .numerics import integrate
+from .period import agm_period, crossing_angle, period, period_ratio, small_angle_period
 from .regimes import Regime
 
 __all__ = [
-    "Motion", "Regime", "am", "cn", "complete_integral", "dn",
-    "incomplete_integral", "inverse_integral", "jacobi", "sn", "solve",
+    "Motion", "Pendulum", "Regime", "agm_period", "am", "cn", "complete_integral",
+    "crossing_angle", "dn", "incomplete_integral", "integrate", "inverse_integral",
+    "jacobi", "period", "period_ratio", "small_angle_period", "sn", "solve",
 ]
 __version__ = "0.1.0"
