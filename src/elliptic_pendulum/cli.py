@@ -1,0 +1,171 @@
+"""Command line: ``python -m elliptic_pendulum table | period | crossing | solve``.
+
+A thin layer over :mod:`~elliptic_pendulum.period`, :mod:`~elliptic_pendulum.motion` and
+:mod:`~elliptic_pendulum.mechanics`, speaking degrees as the note does. Every bad argument,
+including a value the library refuses, ends as one line on stderr and exit status 2.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+from collections.abc import Sequence
+
+import numpy as np
+
+from .mechanics import Pendulum
+from .motion import solve
+from .period import crossing_angle, period, period_ratio
+
+__all__ = ["main"]
+
+# Section 4 of the note: amplitude in degrees -> R to three decimals.
+NOTE_TABLE = {30: 1.017, 45: 1.040, 60: 1.073, 90: 1.180, 120: 1.373, 135: 1.528, 150: 1.762}
+
+EXAMPLES = """\
+examples:
+  python -m elliptic_pendulum table                      the note's table of R (section 4)
+  python -m elliptic_pendulum period 120                 R of a 120 degree swing
+  python -m elliptic_pendulum period 120 --length 1      ... and its period in seconds
+  python -m elliptic_pendulum crossing 2 3 4             where R reaches 2, 3 and 4
+  python -m elliptic_pendulum solve --theta0 170 --t 0 10 0.5
+  python -m elliptic_pendulum solve --theta0 0 --dtheta0 400 --t 0 5 1 --length 2
+"""
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message: str) -> None:  # type: ignore[override]
+        # argparse would print the whole usage first; one line that says what is wrong (and
+        # where the help is) is easier to read in a classroom terminal.
+        self.exit(2, f"{self.prog}: error: {message} (try --help)\n")
+
+
+def _frequency_options(parser: argparse.ArgumentParser) -> None:
+    group = parser.add_mutually_exclusive_group()
+    group.add_argument("--omega0", type=float, help="angular frequency sqrt(g/l) in rad/s (6)")
+    group.add_argument("--length", type=float, help="rod length l in metres")
+    parser.add_argument("--g", type=float, default=None,
+                        help="gravitational acceleration with --length (default 9.80665)")
+
+
+def _build_parser() -> _Parser:
+    parser = _Parser(prog="python -m elliptic_pendulum",
+                     description="The exact simple pendulum via Jacobi elliptic functions.",
+                     epilog=EXAMPLES, formatter_class=argparse.RawDescriptionHelpFormatter)
+    commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+    commands.add_parser("table", help="the note's table of R(theta0) = (2/pi) K(sin(theta0/2))",
+                        description="R(theta0) to 6 decimals beside the note's 3 (section 4).")
+    p = commands.add_parser("period", help="period ratio R and period (26) of a swing",
+                            description="Period ratio R = (26)/(8) of swings of the given "
+                                        "amplitudes in degrees, 0 <= amplitude < 180; the "
+                                        "period itself with --omega0 or --length [--g].")
+    p.add_argument("amplitude", type=float, nargs="+", help="amplitude theta0 in degrees")
+    _frequency_options(p)
+    c = commands.add_parser("crossing", help="amplitudes at which R reaches given values",
+                            description="The amplitude (degrees) where R(theta0) = value, "
+                                        "for each value >= 1; the note says 160, 176, 179.2 "
+                                        "for 2, 3, 4.")
+    c.add_argument("value", type=float, nargs="+", help="period ratio R >= 1")
+    s = commands.add_parser("solve", help="tabulate theta(t), theta'(t) from an initial state",
+                            description="Columns t, theta, theta' of the exact motion, in "
+                                        "degrees and deg/s (radians with --rad).")
+    s.add_argument("--theta0", type=float, required=True, help="initial angle (degrees)")
+    s.add_argument("--dtheta0", type=float, default=0.0,
+                   help="initial angular velocity (deg/s; default 0)")
+    s.add_argument("--t", type=float, nargs=3, metavar=("START", "STOP", "STEP"),
+                   default=[0.0, 10.0, 0.5], help="times START..STOP (inclusive) by STEP "
+                                                  "(default 0 10 0.5)")
+    s.add_argument("--rad", action="store_true", help="angles in radians, in and out")
+    _frequency_options(s)
+    return parser
+
+
+def _omega0(parser: _Parser, args: argparse.Namespace) -> float | None:
+    if args.g is not None and args.length is None:
+        parser.error("--g needs --length (omega0 = sqrt(g/length))")
+    if args.length is not None:
+        g = 9.80665 if args.g is None else args.g
+        return Pendulum(args.length, g=g).omega0
+    return args.omega0
+
+
+def _times(parser: _Parser, start: float, stop: float, step: float) -> np.ndarray:
+    if not all(map(math.isfinite, (start, stop, step))):
+        parser.error("--t START STOP STEP must be finite numbers")
+    if step == 0 or (stop - start) * step < 0:
+        parser.error(f"--t: STEP must be nonzero and lead from START={start} to STOP={stop}")
+    count = math.floor((stop - start) / step * (1 + 1e-12)) + 1  # STOP itself when on the grid
+    if count > 10**7:
+        parser.error(f"--t would print {count} rows; use a larger STEP")
+    return start + step * np.arange(count)
+
+
+def _table() -> None:
+    print(f"{'theta0/deg':>10}  {'R(theta0)':>10}  {'note':>6}")
+    ratios = period_ratio(np.radians(list(NOTE_TABLE)))
+    for (degrees, note), ratio in zip(NOTE_TABLE.items(), ratios):
+        print(f"{degrees:>10}  {ratio:>10.6f}  {note:>6.3f}")
+
+
+def _period(parser: _Parser, args: argparse.Namespace) -> None:
+    for degrees in args.amplitude:
+        if not 0 <= degrees < 180:
+            parser.error(f"amplitude must be in degrees with 0 <= amplitude < 180, got {degrees}")
+    omega0 = _omega0(parser, args)
+    for degrees in args.amplitude:
+        theta0 = math.radians(degrees)
+        line = f"R({degrees:g} deg) = {period_ratio(theta0):.6f}"
+        if omega0 is not None:
+            line += (f"   period = {period(theta0, omega0):.6g} s"
+                     f"   small-angle period = {2 * math.pi / omega0:.6g} s")
+        print(line)
+
+
+def _crossing(args: argparse.Namespace) -> None:
+    for value, angle in zip(args.value, np.atleast_1d(crossing_angle(args.value))):
+        print(f"R = {value:g} at theta0 = {math.degrees(angle):.9f} deg")
+
+
+def _solve(parser: _Parser, args: argparse.Namespace) -> None:
+    omega0 = _omega0(parser, args)
+    t = _times(parser, *args.t)
+    convert = (lambda x: x) if args.rad else math.radians
+    motion = solve(convert(args.theta0), convert(args.dtheta0),
+                   omega0=1.0 if omega0 is None else omega0)
+    theta, dtheta = motion.theta(t), motion.dtheta(t)
+    if not args.rad:
+        theta, dtheta = np.degrees(theta), np.degrees(dtheta)
+    unit = "rad" if args.rad else "deg"
+    kind = "time per revolution" if motion.regime.value == "IV" else "period"
+    when = "infinite" if math.isinf(motion.period) else f"{motion.period:.10g} s"
+    print(f"# regime {motion.regime.value} ({motion.regime.name.lower()}), {kind} {when}")
+    print(f"{'t':>12}  {'theta/' + unit:>16}  {'theta_dot/' + unit + '/s':>18}")
+    for row in zip(t, theta, dtheta):
+        t_k, theta_k, dtheta_k = (float(x) + 0.0 for x in row)  # + 0.0: no "-0.000"
+        print(f"{t_k:>12.6f}  {theta_k:>16.9f}  {dtheta_k:>18.9f}")
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Run the command line with ``argv`` (default ``sys.argv[1:]``); return the exit status.
+
+    Examples
+    --------
+    >>> main(["period", "90"])
+    R(90 deg) = 1.180341
+    0
+    """
+    parser = _build_parser()
+    args = parser.parse_args(sys.argv[1:] if argv is None else list(argv))
+    try:
+        if args.command == "table":
+            _table()
+        elif args.command == "period":
+            _period(parser, args)
+        elif args.command == "crossing":
+            _crossing(args)
+        else:
+            _solve(parser, args)
+    except (ValueError, TypeError) as error:  # the library's domain errors, for the user
+        parser.error(str(error))
+    return 0
