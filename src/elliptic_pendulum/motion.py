@@ -75,6 +75,16 @@ class Motion:
         """beta = c1 / (2 w0^2) of (29) (greater than 1 in regime IV)."""
         return self.energy_constant / (2.0 * self.omega0 ** 2)
 
+    @property
+    def alpha(self) -> float | None:
+        """The note's alpha = sin(theta0/2) of (14) in regime II, else None."""
+        return self.modulus if self.regime is Regime.LIBRATION else None
+
+    @property
+    def gamma(self) -> float | None:
+        """The note's gamma = sqrt(2/(beta + 1)) of §6 in regime IV, else None."""
+        return self.modulus if self.regime is Regime.ROTATION else None
+
     def theta(self, t: Any) -> Any:
         """The angle theta(t) in radians; float or array like ``t``, any real t."""
         t = real_array(t, "t")
