@@ -1,0 +1,142 @@
+"""The note's identities (symbolic.py): sympy checks them, and so does arithmetic at random points.
+
+Every correct statement must check True and every printed erratum False, as the book shows. Because
+``check`` relies on ``sympy.simplify`` and, on stated domains, on splitting radicals as if their
+factors were positive, each statement is also evaluated numerically (mpmath through sympy's evalf at
+30 digits) at random points of its domain *without* that radical splitting: principal square roots
+of positive numbers, so the sign questions are settled by arithmetic, not by assumption.
+"""
+
+import ast
+import dataclasses
+import pathlib
+
+import numpy as np
+import pytest
+import sympy as sp
+
+from elliptic_pendulum import symbolic
+from elliptic_pendulum.symbolic import Identity, identities, identity, printed_errata
+
+IDENTITIES = identities()
+ERRATA = printed_errata()
+PRINTED = [e for e in ERRATA if e.printed is not None]
+
+
+@pytest.mark.parametrize("stmt", IDENTITIES, ids=[e.name for e in IDENTITIES])
+def test_identity_checks_true(stmt):
+    # The note's statement at stmt.equation, as sympy sees it.
+    assert stmt.check(), f"{stmt.equation}: {stmt.latex()}"
+
+
+@pytest.mark.parametrize("err", PRINTED, ids=[e.printed.name for e in PRINTED])
+def test_printed_erratum_fails_and_its_correction_holds(err):
+    assert not err.printed.check(), err.location
+    assert err.corrected.check(), err.location
+
+
+def test_errata_catalogue():
+    # The two mathematical slips found in the note (§4 after (23), §5 partial fractions) and the
+    # two wrong symbols (§3 omega, §5 w_0) are all present.
+    kinds = [(e.location, e.kind) for e in ERRATA]
+    assert ("§4, after (23)", "error") in kinds
+    assert ("§5, between (13) and (27)", "error") in kinds
+    assert sum(kind == "typo" for _, kind in kinds) == 2
+    for e in ERRATA:
+        assert e.printed_text != e.corrected_text and e.comment
+        assert e.kind in {"error", "typo", "notation", "statement", "transcription"}
+    statement = next(e for e in ERRATA if e.kind == "statement")
+    assert statement.corrected.check()
+
+
+def test_names_are_unique_and_every_statement_renders():
+    names = [e.name for e in IDENTITIES]
+    assert len(names) == len(set(names))
+    for e in IDENTITIES + [x.printed for x in PRINTED]:
+        assert e.equation and " = " in e.latex() and e._repr_latex_().startswith("$$")
+
+
+def test_every_numbered_equation_the_brief_lists_is_covered():
+    covered = " ".join(e.equation for e in IDENTITIES)
+    for eq in ["(3)", "(4)", "(8)", "(9)", "(10)", "(13)", "(15)", "(22)", "(23)", "(26)", "(27)",
+               "(28)", "(29)", "(32)", "(33)", "(38)", "(42)", "(43)", "(45)", "Proposition 1.2"]:
+        assert eq in covered, eq
+
+
+def test_identity_lookup():
+    assert identity("eq23").equation == "(23)"
+    with pytest.raises(ValueError, match="name must be one of"):
+        identity("no-such-equation")
+
+
+def test_a_wrong_statement_fails():
+    # The checker is not a rubber stamp: (23) with the sign of the cubic term flipped fails.
+    a, Gu = symbolic.alpha, symbolic.G(symbolic.u, symbolic.alpha)
+    wrong = Identity("wrong", "(23)", sp.Derivative(Gu, (symbolic.u, 2)),
+                     -(1 + a**2) * Gu - 2 * a**2 * Gu**3)
+    assert not wrong.check()
+
+
+def test_symbolic_imports_sympy_only():
+    # DESIGN.md: symbolic imports sympy and nothing numeric from the package.
+    tree = ast.parse(pathlib.Path(symbolic.__file__).read_text())
+    modules = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            modules |= {a.name.split(".")[0] for a in node.names}
+        elif isinstance(node, ast.ImportFrom):
+            modules.add((node.module or ".").split(".")[0])
+    assert modules <= {"__future__", "dataclasses", "sympy"}, modules
+
+
+# Numerical check, independent of simplify and of the radical splitting.
+
+
+def _sample(sym, rng):
+    """A random value on the note's domain for each symbol, by name, as an exact rational."""
+    return sp.Rational(_sample_float(sym, rng))
+
+
+def _sample_float(sym, rng):
+    name = sym.name
+    if sym.is_integer:
+        return int(rng.integers(-3, 4))
+    if name in {"alpha", "gamma"}:
+        return rng.uniform(0.3, 0.95)  # 0 < alpha, gamma < 1
+    if name == "beta":
+        return rng.uniform(1.1, 3.0)  # regime IV: beta > 1
+    if name in {"z", "s", "G"}:
+        return rng.uniform(-0.9, 0.9)  # inside (-1, 1)
+    if name in {r"\ell", "m", "g", "omega_0", "omega", "w_0", "K_1"}:
+        return rng.uniform(0.5, 3.0)
+    return rng.uniform(-2.0, 2.0)
+
+
+def _numeric_residual(stmt, rng):
+    r = dataclasses.replace(stmt, positive_radicands=False).residual()
+    # Derivatives of theta(t) (highest order first), then theta(t), G(.,.), I(.), then symbols.
+    for d in sorted(r.atoms(sp.Derivative), key=lambda d: -d.derivative_count):
+        r = r.subs(d, sp.Rational(rng.uniform(-1.0, 1.0)))
+    for f in r.atoms(sp.core.function.AppliedUndef) | r.atoms(symbolic.G):
+        # theta in (-0.5, 0.5) keeps alpha^2 - sin^2(theta/2) > 0 (regime II) and |theta| < pi;
+        # G in (-0.9, 0.9) is inside (-1, 1).
+        w = 0.5 if f.func.__name__ == "theta" else 0.9
+        r = r.subs(f, sp.Rational(rng.uniform(-w, w)))
+    # Exact rationals: evalf at 30 digits then sees no 16-digit float inputs to cancel.
+    r = r.subs({sym: _sample(sym, rng) for sym in r.free_symbols})
+    value = complex(sp.N(r, 30))
+    return abs(value)
+
+
+@pytest.mark.parametrize("stmt", IDENTITIES, ids=[e.name for e in IDENTITIES])
+def test_identity_holds_numerically_at_random_points(stmt):
+    rng = np.random.default_rng(sum(map(ord, stmt.name)))
+    for _ in range(3):
+        assert _numeric_residual(stmt, rng) < 1e-20, stmt.name
+
+
+@pytest.mark.parametrize("err", PRINTED, ids=[e.printed.name for e in PRINTED])
+def test_printed_erratum_fails_numerically(err):
+    rng = np.random.default_rng(7)
+    assert _numeric_residual(err.printed, rng) > 1e-6
+    assert _numeric_residual(err.corrected, rng) < 1e-20
