@@ -75,6 +75,17 @@ def _orbit(motion: Motion, n: int = 600) -> tuple[np.ndarray, np.ndarray]:
     return motion.theta(t), motion.dtheta(t)
 
 
+def _c1_text(value: float) -> str:
+    """c1 / w0^2 to two decimals, without a '-0.00' from rounding noise."""
+    return f"{round(value, 2) + 0.0:.2f}"
+
+
+def _inline(color: str) -> dict:
+    """Keyword arguments of an inline curve label: centred on the curve, on a white patch."""
+    return dict(fontsize=7, color=color, ha="center", va="center",
+                bbox=dict(boxstyle="round,pad=0.1", fc="white", ec="none", alpha=0.9))
+
+
 def phase_portrait(omega0: float = 1.0, ax: Any = None,
                    amplitudes_deg: Sequence[float] = (30, 60, 90, 120, 150, 175),
                    kicks: Sequence[float] = (1.1, 1.3, 1.6),
@@ -100,14 +111,18 @@ def phase_portrait(omega0: float = 1.0, ax: Any = None,
                                      math.floor(window / (2 * math.pi) + 0.5) + 1)
     for s in shifts:
         ax.plot([s], [0], "o", color="C3", ms=5, label="I" if s == 0 else None)
-    for deg in amplitudes_deg:
+    if label:
+        ax.annotate(_c1_text(-2.0), (0.0, -0.12), **dict(_inline("C3"), va="top"))
+    for i, deg in enumerate(amplitudes_deg):
         m = solve(math.radians(deg), 0.0, omega0)
         th, dth = _orbit(m)
         for s in shifts:
             ax.plot(th + s, dth, color="C0", lw=1, label="II" if (s == 0 and deg == amplitudes_deg[0]) else None)
         if label:
-            ax.annotate(f"{m.energy_constant / w2:.2f}", (0.0, dth.max()), fontsize=7,
-                        color="C0", ha="center", va="bottom")
+            # Inline labels at theta = 0, alternately on the upper and the lower half of the
+            # curves: near the separatrix the curves are too close for one label above another.
+            side = 1 if i % 2 == 0 else -1
+            ax.annotate(_c1_text(m.energy_constant / w2), (0.0, side * dth.max()), **_inline("C0"))
     # The separatrix: theta = 2 gd(w0 t) from theta = -pi to pi, both branches.
     x = np.linspace(-12, 12, 800)
     th, dth = 2 * np.arctan(np.sinh(x)), 2 * omega0 / np.cosh(x)
@@ -126,8 +141,11 @@ def phase_portrait(omega0: float = 1.0, ax: Any = None,
                     label="IV" if (kick == kicks[0] and sign == 1) else None)
         if label:
             c1 = solve(0.0, 2 * omega0 * kick, omega0).energy_constant / w2
-            ax.annotate(f"{c1:.2f}", (math.pi, 2 * omega0 * math.sqrt((kick ** 2) - 1)),
-                        fontsize=7, color="C2", ha="center", va="bottom")
+            ax.annotate(_c1_text(c1), (math.pi, 2 * omega0 * math.sqrt((kick ** 2) - 1)),
+                        **_inline("C2"))
+    if label:  # the separatrix, on the copy left of the centre when the window shows it
+        ax.annotate(_c1_text(2.0), (-2 * math.pi if window >= 2 * math.pi else 0.0, 2 * omega0),
+                    **_inline("C3"))
     ax.set_xlim(-window, window)
     ax.set_xlabel(r"$\theta$")
     ax.set_ylabel(r"$\theta'$")
