@@ -92,7 +92,6 @@ def test_page_renders_math_and_images(page: str, built_book: Path, chromium: str
     path = built_book / page
     assert path.is_file(), f"{page} was not built"
     static = parse(path.read_text(encoding="utf-8"))
-    assert static.math_spans > 0, f"{page} has no math to check"
 
     dom = parse(run_chromium(chromium, tmp_path / "profile", "--dump-dom", path.as_uri()))
     text = "".join(dom.text)
