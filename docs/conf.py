@@ -61,10 +61,19 @@ nitpick_ignore = [
 ]
 nitpick_ignore_regex = [
     # builtins and typing spelled in docstrings and annotations (float, int, ...)
-    (r"py:(class|obj|data)", r"(builtins\.)?(float|int|bool|str|complex|tuple|list|dict|None|object|type)"),
-    (r"py:(class|obj|data)", r"(typing|collections\.abc|types|enum|dataclasses|fractions|decimal)\..*"),
+    (
+        r"py:(class|obj|data)",
+        r"(builtins\.)?(float|int|bool|str|complex|tuple|list|dict|None|object|type)",
+    ),
+    (
+        r"py:(class|obj|data)",
+        r"(typing|collections\.abc|types|enum|dataclasses|fractions|decimal)\..*",
+    ),
     # third-party types: numpy, scipy, sympy, matplotlib
-    (r"py:(class|obj|data|func|mod|meth|attr)", r"(numpy|np|numpy\.typing|npt|scipy|sympy|sp|matplotlib|mpmath)(\..*)?"),
+    (
+        r"py:(class|obj|data|func|mod|meth|attr)",
+        r"(numpy|np|numpy\.typing|npt|scipy|sympy|sp|matplotlib|mpmath)(\..*)?",
+    ),
     (r"py:(class|obj)", r"(ndarray|NDArray|Axes|Figure|Expr|Symbol|Eq|Basic|ArrayLike)(\[.*\])?"),
     (r"py:(class|obj)", r"(numpy\.)?float64"),
 ]

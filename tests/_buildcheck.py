@@ -37,7 +37,9 @@ def toctree_entries(source: Path) -> list[str]:
     entries = []
     for page in sorted(source.glob("*.md")):
         text = page.read_text(encoding="utf-8")
-        for block in re.findall(r"^(`{3,}|:{3,})\{toctree\}[^\n]*\n(.*?)^\1\s*$", text, re.M | re.S):
+        for block in re.findall(
+            r"^(`{3,}|:{3,})\{toctree\}[^\n]*\n(.*?)^\1\s*$", text, re.M | re.S
+        ):
             for line in block[1].splitlines():
                 line = line.strip()
                 if not line or line.startswith(":"):
@@ -49,5 +51,8 @@ def toctree_entries(source: Path) -> list[str]:
 
 def pages_with_math(html_dir: Path) -> list[Path]:
     """The built pages that contain math (Sphinx adds the MathJax script only to those)."""
-    return [p for p in sorted(html_dir.rglob("*.html"))
-            if "_static" not in p.parts and 'class="math' in p.read_text(encoding="utf-8")]
+    return [
+        p
+        for p in sorted(html_dir.rglob("*.html"))
+        if "_static" not in p.parts and 'class="math' in p.read_text(encoding="utf-8")
+    ]

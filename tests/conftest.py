@@ -31,13 +31,29 @@ class Build:
 
     @property
     def warnings(self) -> list[str]:
-        return [line for line in self.output.splitlines() if re.search(r"\b(WARNING|ERROR|CRITICAL):", line)]
+        return [
+            line
+            for line in self.output.splitlines()
+            if re.search(r"\b(WARNING|ERROR|CRITICAL):", line)
+        ]
 
 
 def sphinx_build(source: Path, outdir: Path, *extra: str) -> Build:
     """Run ``sphinx-build -n -W --keep-going -E`` (plus ``extra``) in a subprocess."""
-    cmd = [sys.executable, "-m", "sphinx", "-n", "-W", "--keep-going", "-E", *extra,
-           "-b", "html", str(source), str(outdir)]
+    cmd = [
+        sys.executable,
+        "-m",
+        "sphinx",
+        "-n",
+        "-W",
+        "--keep-going",
+        "-E",
+        *extra,
+        "-b",
+        "html",
+        str(source),
+        str(outdir),
+    ]
     env = dict(os.environ, JUPYTER_PLATFORM_DIRS="1")
     # The notebook kernel must find this interpreter's packages (the editable install).
     env["PATH"] = str(Path(sys.executable).parent) + os.pathsep + env.get("PATH", "")
@@ -62,8 +78,9 @@ def pytest_terminal_summary(terminalreporter: pytest.TerminalReporter) -> None:
 @pytest.fixture(scope="session")
 def book_build(tmp_path_factory: pytest.TempPathFactory) -> Build:
     """The book built from clean with forced execution (what CI checks)."""
-    return sphinx_build(BOOK, tmp_path_factory.mktemp("book") / "html",
-                        "-D", "nb_execution_mode=force")
+    return sphinx_build(
+        BOOK, tmp_path_factory.mktemp("book") / "html", "-D", "nb_execution_mode=force"
+    )
 
 
 @pytest.fixture(scope="session")

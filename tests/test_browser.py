@@ -39,10 +39,21 @@ def chromium() -> str:
 
 
 def run_chromium(binary: str, profile: Path, *args: str) -> str:
-    cmd = [binary, "--headless", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
-           "--disable-background-networking", "--disable-component-update", "--disable-sync",
-           "--no-first-run", "--hide-scrollbars", f"--user-data-dir={profile}",
-           "--virtual-time-budget=10000", *args]
+    cmd = [
+        binary,
+        "--headless",
+        "--no-sandbox",
+        "--disable-gpu",
+        "--disable-dev-shm-usage",
+        "--disable-background-networking",
+        "--disable-component-update",
+        "--disable-sync",
+        "--no-first-run",
+        "--hide-scrollbars",
+        f"--user-data-dir={profile}",
+        "--virtual-time-budget=10000",
+        *args,
+    ]
     proc = subprocess.run(cmd, capture_output=True, text=True, timeout=180)
     assert proc.returncode == 0, proc.stderr[-4000:]
     return proc.stdout
@@ -87,8 +98,9 @@ def parse(html: str) -> _Text:
 
 
 @pytest.mark.parametrize("page", PAGES)
-def test_page_renders_math_and_images(page: str, built_book: Path, chromium: str,
-                                      tmp_path: Path) -> None:
+def test_page_renders_math_and_images(
+    page: str, built_book: Path, chromium: str, tmp_path: Path
+) -> None:
     path = built_book / page
     assert path.is_file(), f"{page} was not built"
     static = parse(path.read_text(encoding="utf-8"))
@@ -98,7 +110,9 @@ def test_page_renders_math_and_images(page: str, built_book: Path, chromium: str
     for raw in ["\\(", "\\[", "$$"]:
         assert raw not in text, f"untypeset TeX {raw!r} left in {page}"
     typeset = dom.tags.get("mjx-container", 0)
-    assert typeset >= static.math_spans, f"MathJax typeset {typeset} of {static.math_spans} formulas"
+    assert typeset >= static.math_spans, (
+        f"MathJax typeset {typeset} of {static.math_spans} formulas"
+    )
 
     for src in static.images:
         if not src.startswith("data:"):
@@ -108,7 +122,12 @@ def test_page_renders_math_and_images(page: str, built_book: Path, chromium: str
     shots = built_book / "_screenshots"
     shots.mkdir(exist_ok=True)
     shot = shots / page.replace(".html", ".png")
-    run_chromium(chromium, tmp_path / "profile", f"--screenshot={shot}", "--window-size=1200,2000",
-                 path.as_uri())
+    run_chromium(
+        chromium,
+        tmp_path / "profile",
+        f"--screenshot={shot}",
+        "--window-size=1200,2000",
+        path.as_uri(),
+    )
     assert shot.is_file() and shot.stat().st_size > 10_000
     print(f"\nscreenshot: {shot}")

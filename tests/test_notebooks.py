@@ -12,14 +12,26 @@ from conftest import BOOK, ROOT
 
 pytestmark = pytest.mark.slow
 
-_spec = importlib.util.spec_from_file_location("export_notebooks", ROOT / "tools" / "export_notebooks.py")
+_spec = importlib.util.spec_from_file_location(
+    "export_notebooks", ROOT / "tools" / "export_notebooks.py"
+)
 assert _spec is not None and _spec.loader is not None
 export_notebooks = importlib.util.module_from_spec(_spec)
 _spec.loader.exec_module(export_notebooks)
 
 PAGES = export_notebooks.book_pages(BOOK)
 # Markup that Jupyter would show raw.
-MYST_LEFTOVERS = ["{glue", "{prf", ":::{", "```{", "{eq}`", "{ref}`", "{numref}`", "{cite", "{math}`"]
+MYST_LEFTOVERS = [
+    "{glue",
+    "{prf",
+    ":::{",
+    "```{",
+    "{eq}`",
+    "{ref}`",
+    "{numref}`",
+    "{cite",
+    "{math}`",
+]
 
 
 def test_the_book_has_notebook_pages() -> None:

@@ -26,7 +26,9 @@ import nbformat
 
 GlueFn = Callable[[str, str], str]
 
-DIRECTIVE_OPEN = re.compile(r"^(?P<indent>\s*)(?P<fence>`{3,}|:{3,})\{(?P<name>[^}]+)\}\s*(?P<arg>.*)$")
+DIRECTIVE_OPEN = re.compile(
+    r"^(?P<indent>\s*)(?P<fence>`{3,}|:{3,})\{(?P<name>[^}]+)\}\s*(?P<arg>.*)$"
+)
 OPTION = re.compile(r"^\s*:(?P<key>[\w-]+):\s*(?P<value>.*)$")
 ROLE = re.compile(r"\{(?P<role>[\w:+-]+)\}`(?P<content>[^`]*)`")
 TARGET = re.compile(r"^\s*\([\w:.-]+\)=\s*$")
@@ -68,7 +70,15 @@ BOXED = {
 }
 # Directives with nothing to show in a notebook (navigation, bibliography, glued figures
 # whose picture the code cell above already draws).
-DROPPED = {"toctree", "bibliography", "contents", "tableofcontents", "glue:figure", "glue", "glue:any"}
+DROPPED = {
+    "toctree",
+    "bibliography",
+    "contents",
+    "tableofcontents",
+    "glue:figure",
+    "glue",
+    "glue:any",
+}
 CODE = {"code-block", "code", "sourcecode", "literalinclude"}
 
 
@@ -106,8 +116,12 @@ def _quote(lines: list[str]) -> list[str]:
     return [("> " + line).rstrip() for line in lines]
 
 
-def convert_markdown(text: str, glue: GlueFn = default_glue, source_dir: Path | None = None,
-                     out_dir: Path | None = None) -> str:
+def convert_markdown(
+    text: str,
+    glue: GlueFn = default_glue,
+    source_dir: Path | None = None,
+    out_dir: Path | None = None,
+) -> str:
     """Rewrite a MyST Markdown cell to Markdown that plain Jupyter renders."""
     lines = text.splitlines()
     out: list[str] = []
@@ -121,7 +135,9 @@ def convert_markdown(text: str, glue: GlueFn = default_glue, source_dir: Path | 
             arg = opened["arg"].strip()
             body: list[str] = []
             i += 1
-            depth_fence = re.compile(r"^\s*" + re.escape(fence[0]) + "{" + str(len(fence)) + r",}\s*$")
+            depth_fence = re.compile(
+                r"^\s*" + re.escape(fence[0]) + "{" + str(len(fence)) + r",}\s*$"
+            )
             while i < len(lines) and not depth_fence.match(lines[i]):
                 body.append(lines[i])
                 i += 1
@@ -140,8 +156,14 @@ def convert_markdown(text: str, glue: GlueFn = default_glue, source_dir: Path | 
     return re.sub(r"\n{3,}", "\n\n", text).strip("\n")
 
 
-def _convert_directive(name: str, arg: str, body: list[str], glue: GlueFn,
-                       source_dir: Path | None, out_dir: Path | None) -> list[str]:
+def _convert_directive(
+    name: str,
+    arg: str,
+    body: list[str],
+    glue: GlueFn,
+    source_dir: Path | None,
+    out_dir: Path | None,
+) -> list[str]:
     options: dict[str, str] = {}
     while body and OPTION.match(body[0]):
         m = OPTION.match(body[0])
@@ -203,7 +225,11 @@ def export_page(page: Path, out_dir: Path, glue: GlueFn = default_glue) -> nbfor
     )
     nb.cells.insert(0, origin)
     nb.metadata.pop("jupytext", None)
-    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
+    nb.metadata["kernelspec"] = {
+        "name": "python3",
+        "display_name": "Python 3",
+        "language": "python",
+    }
     return nb
 
 
@@ -231,8 +257,9 @@ def execute(nb: nbformat.NotebookNode, cwd: Path, timeout: int = 600) -> nbforma
     """Run a notebook top to bottom in a fresh ``python3`` kernel; raise on the first error."""
     from nbclient import NotebookClient
 
-    client = NotebookClient(nb, timeout=timeout, kernel_name="python3",
-                            resources={"metadata": {"path": str(cwd)}})
+    client = NotebookClient(
+        nb, timeout=timeout, kernel_name="python3", resources={"metadata": {"path": str(cwd)}}
+    )
     client.execute()
     return nb
 
@@ -255,8 +282,13 @@ def fill_glue(nb: nbformat.NotebookNode, page: Path, out_dir: Path) -> nbformat.
     return nb
 
 
-def export(book_dir: Path, out_dir: Path, run: bool = False, timeout: int = 600,
-           pages: Iterable[Path] | None = None) -> list[Path]:
+def export(
+    book_dir: Path,
+    out_dir: Path,
+    run: bool = False,
+    timeout: int = 600,
+    pages: Iterable[Path] | None = None,
+) -> list[Path]:
     """Export (and optionally execute) every notebook page of the book; return the files."""
     out_dir.mkdir(parents=True, exist_ok=True)
     written = []
@@ -275,7 +307,9 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("book", type=Path, help="folder of the MyST pages (book/)")
     parser.add_argument("out", type=Path, help="folder for the .ipynb files (notebooks/)")
-    parser.add_argument("--execute", action="store_true", help="run each notebook in a fresh kernel")
+    parser.add_argument(
+        "--execute", action="store_true", help="run each notebook in a fresh kernel"
+    )
     parser.add_argument("--timeout", type=int, default=600, help="seconds per cell")
     args = parser.parse_args(argv)
     for path in export(args.book, args.out, run=args.execute, timeout=args.timeout):
