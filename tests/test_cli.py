@@ -69,9 +69,9 @@ def test_crossing_angles(capsys):
     assert status == 0
     angles = [float(line.split("=")[2].split()[0]) for line in out.strip().splitlines()]
     # The note: R exceeds 2, 3, 4 "at" 160, 176, 179.2 degrees (first grid angle past the root).
-    for angle, note, step in zip(angles, [160, 176, 179.2], [1, 1, 0.1]):
+    for angle, note, step in zip(angles, [160, 176, 179.2], [1, 1, 0.1], strict=True):
         assert note - step < angle < note
-    for value, angle in zip([2, 3, 4], angles):  # mpmath checks the 9 printed decimals
+    for value, angle in zip([2, 3, 4], angles, strict=True):  # mpmath checks the 9 printed decimals
         with mpmath.workdps(30):
             assert abs(mp_ratio_degrees(mpmath.mpf(angle)) - value) < 1e-7
 
@@ -100,7 +100,7 @@ def test_solve_rotation_with_length(capsys):
                     "--length", "2")
     assert out.startswith("# regime IV")
     thetas = [float(line.split()[1]) for line in out.strip().splitlines()[2:]]
-    assert all(b > a for a, b in zip(thetas, thetas[1:]))  # it keeps going round
+    assert all(b > a for a, b in zip(thetas, thetas[1:], strict=False))  # it keeps going round
 
 
 @pytest.mark.parametrize("argv, word", [

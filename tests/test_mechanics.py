@@ -87,7 +87,8 @@ def test_tension_satisfies_newtons_law_2(theta0, dtheta0):
              - pos(t - 2 * h)) / (12 * h * h)
     theta = motion.theta(t)
     tension = p.tension(motion, t)
-    force = tension * np.array([-np.sin(theta), np.cos(theta)]) + p.mass * p.g * np.array([0, -1])[:, None]
+    weight = p.mass * p.g * np.array([0.0, -1.0])[:, None]
+    force = tension * np.array([-np.sin(theta), np.cos(theta)]) + weight
     scale = p.mass * (p.g + p.length * np.max(np.abs(motion.dtheta(t))) ** 2)
     np.testing.assert_allclose(p.mass * accel, force, rtol=0, atol=1e-6 * scale)
 

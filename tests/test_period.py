@@ -122,11 +122,12 @@ def test_crossing_angles_in_the_note():
     # Section 4: R exceeds 2, 3, 4 "at" 160, 176, 179.2 degrees; the exact crossings lie just
     # below these grid angles. The mpmath root of (2/pi) K(sin^2(theta/2)) = v decides.
     degrees = np.degrees(crossing_angle([2, 3, 4]))
-    for value, ours, note, step in zip([2, 3, 4], degrees, [160, 176, 179.2], [1, 1, 0.1]):
+    notes = [(160, 1), (176, 1), (179.2, 0.1)]  # (grid angle, grid step) for R = 2, 3, 4
+    for value, ours, (note, step) in zip([2, 3, 4], degrees, notes, strict=True):
         assert note - step < ours < note
         with mpmath.workdps(40):
             x = mpmath.findroot(
-                lambda x: 2 / mpmath.pi * mpmath.ellipk(mpmath.cos(x / 2) ** 2) - value,
+                lambda x, v=value: 2 / mpmath.pi * mpmath.ellipk(mpmath.cos(x / 2) ** 2) - v,
                 (mpmath.mpf("1e-4"), mpmath.mpf(1)), solver="anderson")
             reference = float(180 - mpmath.degrees(x))
         assert ours == pytest.approx(reference, rel=1e-15)

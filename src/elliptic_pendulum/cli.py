@@ -104,7 +104,7 @@ def _times(parser: _Parser, start: float, stop: float, step: float) -> np.ndarra
 def _table() -> None:
     print(f"{'theta0/deg':>10}  {'R(theta0)':>10}  {'note':>6}")
     ratios = period_ratio(np.radians(list(NOTE_TABLE)))
-    for (degrees, note), ratio in zip(NOTE_TABLE.items(), ratios):
+    for (degrees, note), ratio in zip(NOTE_TABLE.items(), ratios, strict=True):
         print(f"{degrees:>10}  {ratio:>10.6f}  {note:>6.3f}")
 
 
@@ -123,7 +123,7 @@ def _period(parser: _Parser, args: argparse.Namespace) -> None:
 
 
 def _crossing(args: argparse.Namespace) -> None:
-    for value, angle in zip(args.value, np.atleast_1d(crossing_angle(args.value))):
+    for value, angle in zip(args.value, np.atleast_1d(crossing_angle(args.value)), strict=True):
         print(f"R = {value:g} at theta0 = {math.degrees(angle):.9f} deg")
 
 
@@ -141,7 +141,7 @@ def _solve(parser: _Parser, args: argparse.Namespace) -> None:
     when = "infinite" if math.isinf(motion.period) else f"{motion.period:.10g} s"
     print(f"# regime {motion.regime.value} ({motion.regime.name.lower()}), {kind} {when}")
     print(f"{'t':>12}  {'theta/' + unit:>16}  {'theta_dot/' + unit + '/s':>18}")
-    for row in zip(t, theta, dtheta):
+    for row in zip(t, theta, dtheta, strict=True):
         t_k, theta_k, dtheta_k = (float(x) + 0.0 for x in row)  # + 0.0: no "-0.000"
         print(f"{t_k:>12.6f}  {theta_k:>16.9f}  {dtheta_k:>18.9f}")
 

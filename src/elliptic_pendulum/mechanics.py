@@ -62,6 +62,7 @@ class Pendulum:
     mass: float = 1.0
 
     def __post_init__(self) -> None:
+        """Check the three parameters: finite real numbers > 0, stored as floats."""
         for name in ("length", "g", "mass"):
             # object.__setattr__: the dataclass is frozen, and the check stores plain floats.
             object.__setattr__(self, name, positive_scalar(getattr(self, name), name))
@@ -89,7 +90,7 @@ class Pendulum:
         return small_angle_period(self.omega0)
 
     def solve(self, theta0: Any, dtheta0: Any = 0.0) -> Any:
-        r"""The exact motion from the initial state theta(0) = theta0, theta'(0) = dtheta0.
+        r"""Solve for the exact motion from theta(0) = theta0, theta'(0) = dtheta0.
 
         .. math:: \theta'' = -\frac{g}{\ell}\sin\theta \quad (3)
 

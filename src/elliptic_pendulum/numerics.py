@@ -1,4 +1,4 @@
-"""The reference numerical solution of the pendulum equation (3), for comparison with the closed form.
+"""The reference numerical solution of the pendulum equation (3), to compare with the closed form.
 
 The book and the benchmarks set the elliptic-function solution of :mod:`elliptic_pendulum.motion`
 beside what a general ODE solver gives, :func:`scipy.integrate.solve_ivp` on (3) written as a

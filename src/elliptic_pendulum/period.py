@@ -1,14 +1,14 @@
-"""Periods of the simple pendulum: (8), (26), the ratio R of section 4 and where it crosses a value.
+r"""Periods of the simple pendulum: (8), (26), the ratio R of section 4, where R crosses a value.
 
-The small-angle period is (8), :math:`P_\\ell = 2\\pi/\\omega_0`; a libration (regime II) of
-amplitude :math:`\\theta_0` has the period (26), :math:`P_{II} = 4 K_1(\\sin(\\theta_0/2))/\\omega_0`,
-and section 4 of the note tabulates their ratio
-:math:`R(\\theta_0) = (2/\\pi) K_1(\\sin(\\theta_0/2))`.
+The small-angle period is (8), :math:`P_\ell = 2\pi/\omega_0`; a libration (regime II) of
+amplitude :math:`\theta_0` has the period (26),
+:math:`P_{II} = 4 K_1(\sin(\theta_0/2))/\omega_0`, and section 4 of the note tabulates their ratio
+:math:`R(\theta_0) = (2/\pi) K_1(\sin(\theta_0/2))`.
 
-Amplitudes are in radians, in :math:`[0, \\pi)`. Near :math:`\\theta_0 = \\pi` the modulus
-:math:`\\sin(\\theta_0/2)` rounds to 1 while :math:`K_1` grows like :math:`\\log(4/k_c)`, so every
-function here hands the complementary modulus :math:`k_c = \\cos(\\theta_0/2)` to
-:func:`~elliptic_pendulum.elliptic.complete_integral` instead of forming :math:`1 - \\sin^2`.
+Amplitudes are in radians, in :math:`[0, \pi)`. Near :math:`\theta_0 = \pi` the modulus
+:math:`\sin(\theta_0/2)` rounds to 1 while :math:`K_1` grows like :math:`\log(4/k_c)`, so every
+function here hands the complementary modulus :math:`k_c = \cos(\theta_0/2)` to
+:func:`~elliptic_pendulum.elliptic.complete_integral` instead of forming :math:`1 - \sin^2`.
 """
 
 from __future__ import annotations
@@ -237,7 +237,7 @@ def _ratio_near_top(x):
 
 
 def crossing_angle(value):
-    r"""The amplitude at which the period ratio R reaches a given value.
+    r"""Find the amplitude at which the period ratio R reaches a given value.
 
     Solves :math:`R(\theta_0) = \frac{2}{\pi} K_1(\sin(\theta_0/2)) = v` for
     :math:`\theta_0 \in [0, \pi)`; section 4 of the note says R exceeds 2, 3 and 4 near
