@@ -41,11 +41,11 @@ def _I(k):
     """The note's I = arcsin G (40), written atan2(G, cn): arcsin near 1 would halve the digits."""
     K = float(complete_integral(k))
 
-    def I(r):
+    def amplitude(r):
         r = np.clip(r, -K, K)
         return np.arctan2(inverse_integral(r, k), cn(r, k))
 
-    return I
+    return amplitude
 
 
 def _mp_sn(u, k):
@@ -55,7 +55,7 @@ def _mp_sn(u, k):
 
 
 def _mp_am(u, k):
-    """am(u) = atan2(sn, cn) + 2 pi n, n chosen so am stays within pi of its secular part pi u/(2K)."""
+    """am(u) = atan2(sn, cn) + 2 pi n, with n keeping am within pi of its secular part pi u / 2K."""
     out = []
     with mpmath.workdps(30):
         m = mpmath.mpf(k) ** 2
@@ -134,7 +134,7 @@ def test_staircase_extension_follows_definition_21_piecewise():
 
 
 def test_periodic_extension_of_G_is_C2_at_K():
-    # G'(K1-0) = 0 (Prop. 1.3) and G''(K1-0) = alpha^2 - 1 (after (23)): both one-sided limits agree.
+    # G'(K1-0) = 0 (Prop. 1.3), G''(K1-0) = alpha^2 - 1 (after (23)): one-sided limits agree.
     k = 0.8
     K = float(complete_integral(k))
     Gbar = periodic_extension(_G(k), _mp_k_pair(k))

@@ -1,9 +1,9 @@
 """Lemma 2 of the note as code: extending an odd function from [-a, a] to the real line.
 
 The odd periodic extension (20) turns the restricted inverse G of E1 into sn; the odd staircase
-extension (21) turns I = arcsin G into the amplitude am. The lemma's hypotheses (f'(a-0) = 0 for (20),
-f''(a-0) = 0 for (21)) are what make the extensions smooth; :func:`one_sided_derivatives` shows
-numerically what happens when they fail.
+extension (21) turns I = arcsin G into the amplitude am. The lemma's hypotheses
+(f'(a-0) = 0 for (20), f''(a-0) = 0 for (21)) are what make the extensions smooth;
+:func:`one_sided_derivatives` shows numerically what happens when they fail.
 
 Both extensions reduce x to r = x - 2na with |r| <= a. The reduction is exact for the given float a
 (an error-free product, then a Sterbenz subtraction), so for |x| up to 1e4 a the extension is as
@@ -54,7 +54,7 @@ def _reduce(x, hi, lo):
     xs = np.where(finite, x, 0.0)  # f never sees inf or nan; those give nan below
     n = np.rint(xs / (2.0 * hi))
     p, e = _two_product(n, 2.0 * hi)
-    # x - p is exact (Sterbenz: x and p are within a factor 2 when n != 0), e is the product's error.
+    # x - p is exact (Sterbenz: x, p within a factor 2 when n != 0); e is the product's error.
     r = ((xs - p) - e) - n * (2.0 * lo)
     # Rounding at a half-integer x/(2a) may leave r an ulp outside [-a, a], where f is undefined.
     return n, np.clip(r, -hi, hi), finite
@@ -76,7 +76,7 @@ def periodic_extension(f: Callable, a) -> Callable:
     f : callable
         Vectorized odd function, called only with arguments in [-a, a].
     a : float or (float, float)
-        Half-width a > 0 of the interval, or a pair (hi, lo) with a = hi + lo for an exact reduction.
+        Half-width a > 0, or a pair (hi, lo) with a = hi + lo for an exact reduction.
 
     Returns
     -------

@@ -1,7 +1,8 @@
 r"""The note's identities as sympy statements, each one checkable.
 
 Every statement is an :class:`Identity`: the note's location, a left and a right side to display
-(``sympy.latex``), and :meth:`Identity.check`, True iff ``sympy.simplify`` reduces the residual to 0.
+(``sympy.latex``), and :meth:`Identity.check`, True iff ``sympy.simplify`` reduces the residual
+to 0.
 The book shows and checks a statement in one cell, and ``tests/test_symbolic.py`` checks the very
 same objects. :func:`identities` lists the correct statements in the note's order, (1)-(46);
 :func:`printed_errata` lists the places where the note prints something else, with the printed
@@ -9,9 +10,9 @@ statement as an Identity whose check fails.
 
 Some steps hold only on a domain, where the radicands are positive: -1 < z < 1, 0 < alpha < 1,
 -pi < theta < pi. There sympy cannot split sqrt(A B) into sqrt(A) sqrt(B) by itself; such statements
-carry ``positive_radicands=True`` and their residual splits radicals as if every factor were positive
-(``force=True``). That is sound on the stated domain only, so the tests also evaluate those residuals
-numerically at random points of the domain, independently of ``simplify``.
+carry ``positive_radicands=True`` and their residual splits radicals as if every factor were
+positive (``force=True``). That is sound on the stated domain only, so the tests also evaluate the
+residuals numerically at random points of the domain, independently of ``simplify``.
 
 This module imports sympy only, nothing numeric from the package.
 """
@@ -136,8 +137,8 @@ class Identity:
 class Erratum:
     """A place where the note prints something other than what it means.
 
-    ``printed`` is the statement as printed (its check fails) or None when the printed text is not an
-    equation; ``corrected`` is the statement that holds (its check succeeds).
+    ``printed`` is the statement as printed (its check fails) or None when the printed text is
+    not an equation; ``corrected`` is the statement that holds (its check succeeds).
     """
 
     location: str
@@ -150,7 +151,7 @@ class Erratum:
 
 
 def _E1(upper, k=alpha):
-    """The note's E1 (17) as an unevaluated integral."""
+    """Return the note's E1 (17) as an unevaluated integral."""
     return sp.Integral(1 / sp.sqrt((1 - s**2) * (1 - k**2 * s**2)), (s, 0, upper))
 
 
@@ -185,7 +186,7 @@ def identities() -> list[Identity]:
     tanh = sp.tanh(omega0 * t - c3)
     sqrt30 = sp.sqrt(2 * sp.cos(theta) + 2 * beta)
     beta_of_gamma = 2 / gamma**2 - 1
-    I = sp.asin(Gg)
+    I_ = sp.asin(Gg)
     integrand = 1 / sp.sqrt((1 - s**2) * (1 - alpha**2 * s**2))
     P = sp.Symbol("P_II")
     In = sp.Function("I")
@@ -197,7 +198,8 @@ def identities() -> list[Identity]:
                  ell * ddth * sp.sin(theta) + ell * dth**2 * sp.cos(theta)),
         Identity("eq3", "(3)", A_sol, -g / ell * sp.sin(theta)),
         Identity("eq4", "(4)", dth**2, T_sol / (ell * mass) - g / ell * sp.cos(theta)),
-        Identity("eq7", "(5)-(7)", c7.diff(t, 2), -g / ell * c7, given=((omega0, sp.sqrt(g / ell)),)),
+        Identity("eq7", "(5)-(7)", c7.diff(t, 2), -g / ell * c7,
+                 given=((omega0, sp.sqrt(g / ell)),)),
         Identity("eq8", "(8)", c7.subs(t, t + 2 * sp.pi / omega0), c7),
         Identity("eq8_value", "(8)", 2 * sp.pi / sp.sqrt(g / ell), 2 * sp.pi * sp.sqrt(ell / g)),
         Identity("eq9", "(9)", sp.Derivative(dth**2 - 2 * w2 * sp.cos(theta), t), sp.Integer(0),
@@ -211,10 +213,12 @@ def identities() -> list[Identity]:
         Identity("regime_I", "§3, case I", 2 * w2 * sp.cos(theta) - 2 * w2,
                  -4 * w2 * sp.sin(theta / 2) ** 2),
         Identity("eq12", "(11)-(12)", 2 * w2 * sp.cos(theta) + c1,
-                 2 * w2 * (sp.cos(theta) - sp.cos(theta0)), given=((c1, -2 * w2 * sp.cos(theta0)),)),
+                 2 * w2 * (sp.cos(theta) - sp.cos(theta0)),
+                 given=((c1, -2 * w2 * sp.cos(theta0)),)),
         Identity("eq13", "(13)", 2 * w2 * (sp.cos(theta) + 1), 4 * w2 * sp.cos(theta / 2) ** 2),
         Identity("eq13_root", "(13)", sp.sqrt(4 * w2 * sp.cos(theta / 2) ** 2),
-                 2 * omega0 * sp.cos(theta / 2), positive_radicands=True, domain="-pi < theta < pi"),
+                 2 * omega0 * sp.cos(theta / 2), positive_radicands=True,
+                 domain="-pi < theta < pi"),
         Identity("eq12_half_angle", "§4, before (14)", 2 * w2 * (sp.cos(theta) - sp.cos(theta0)),
                  4 * w2 * (sp.sin(theta0 / 2) ** 2 - sp.sin(theta / 2) ** 2)),
         Identity("eq15", "(14)-(15)", xi.diff(t) ** 2, w2 * (1 - xi**2) * (1 - alpha**2 * xi**2),
@@ -231,7 +235,8 @@ def identities() -> list[Identity]:
         Identity("eq22", "(22)", 1 / _E1(Gs).diff(Gs), sp.sqrt(X)),
         Identity("eq22_at_K1", "§4, G_u(K1 - 0) = 0", sp.sqrt(X).subs(Gs, 1), sp.Integer(0)),
         Identity("eq23_middle", "(23)", (-2 * Ga - 2 * alpha**2 * Ga + 4 * alpha**2 * Ga**3)
-                 * sp.Derivative(Ga, u) / (2 * sp.sqrt(Xu)), -(1 + alpha**2) * Ga + 2 * alpha**2 * Ga**3),
+                 * sp.Derivative(Ga, u) / (2 * sp.sqrt(Xu)),
+                 -(1 + alpha**2) * Ga + 2 * alpha**2 * Ga**3),
         Identity("eq23", "(23)", sp.Derivative(Xu, u) / (2 * sp.Derivative(Ga, u)),
                  -(1 + alpha**2) * Ga + 2 * alpha**2 * Ga**3),
         Identity("eq23_direct", "(23)", sp.Derivative(Ga, (u, 2)),
@@ -251,7 +256,8 @@ def identities() -> list[Identity]:
         Identity("eq27", "(27)", tanh.diff(t), omega0 * (1 - tanh**2)),
         Identity("eq27_exp", "(27)", (sp.exp(2 * x) - 1) / (sp.exp(2 * x) + 1), sp.tanh(x),
                  given=((sp.tanh(x), (sp.exp(x) - sp.exp(-x)) / (sp.exp(x) + sp.exp(-x))),)),
-        Identity("eq13_to_27", "§5", dth / 2 * sp.cos(theta / 2), omega0 * (1 - sp.sin(theta / 2) ** 2),
+        Identity("eq13_to_27", "§5", dth / 2 * sp.cos(theta / 2),
+                 omega0 * (1 - sp.sin(theta / 2) ** 2),
                  given=((dth, 2 * omega0 * sp.cos(theta / 2)),)),
         Identity("eq28", "(28)", (2 * sp.asin(tanh)).diff(t), 2 * omega0 * sp.cos(sp.asin(tanh))),
         Identity("eq28_solves_eq3", "(28)", (2 * sp.asin(tanh)).diff(t, 2),
@@ -264,9 +270,11 @@ def identities() -> list[Identity]:
                  2 / gamma * sp.sqrt(1 - gamma**2 * sp.sin(theta / 2) ** 2),
                  given=((beta, beta_of_gamma),), positive_radicands=True, domain="beta > 1"),
         Identity("eq32", "(31)-(32)",
-                 sp.Integral(1 / sp.sqrt(1 - gamma**2 * sp.sin(phi / 2) ** 2), (phi, 0, theta)).diff(t),
+                 sp.Derivative(sp.Integral(1 / sp.sqrt(1 - gamma**2 * sp.sin(phi / 2) ** 2),
+                                           (phi, 0, theta)), t),
                  sp.Derivative(2 * (omega0 * t / gamma + c4), t),
-                 given=((dth, 2 * omega0 / gamma * sp.sqrt(1 - gamma**2 * sp.sin(theta / 2) ** 2)),)),
+                 given=((dth, 2 * omega0 / gamma
+                         * sp.sqrt(1 - gamma**2 * sp.sin(theta / 2) ** 2)),)),
         Identity("eq33", "(33)", (1 / sp.sqrt(1 - gamma**2 * sp.sin(phi / 2) ** 2)).subs(
                      phi, 2 * sp.asin(z)) * sp.Derivative(2 * sp.asin(z), z),
                  2 / sp.sqrt((1 - z**2) * (1 - gamma**2 * z**2)),
@@ -276,15 +284,17 @@ def identities() -> list[Identity]:
         Identity("eq35_solves_eq30", "(35), (41)", sp.Derivative(th35, t),
                  omega0 * sqrt30.subs(theta, th35), given=((beta, beta_of_gamma),),
                  positive_radicands=True, domain="|G| < 1, 0 < gamma < 1"),
-        Identity("eq42", "(42)", sp.Derivative(I, u), sp.sqrt(1 - gamma**2 * Gg**2),
+        Identity("eq42", "(42)", sp.Derivative(I_, u), sp.sqrt(1 - gamma**2 * Gg**2),
                  positive_radicands=True, domain="|G| < 1"),
         Identity("eq42_at_K1", "(42)", sp.sqrt(1 - gamma**2 * Gs**2).subs(Gs, 1),
                  sp.sqrt(1 - gamma**2)),
         Identity("I_uu", "§6, I_uu", sp.Derivative(sp.sqrt(1 - gamma**2 * Gg**2), u),
                  -gamma**2 * Gg * sp.sqrt(1 - Gg**2), positive_radicands=True, domain="|G| < 1"),
-        Identity("I_uu_at_K1", "§6, I_uu(K1 - 0) = 0", (-gamma**2 * Gs * sp.sqrt(1 - Gs**2)).subs(Gs, 1),
+        Identity("I_uu_at_K1", "§6, I_uu(K1 - 0) = 0",
+                 (-gamma**2 * Gs * sp.sqrt(1 - Gs**2)).subs(Gs, 1),
                  sp.Integer(0)),
-        Identity("eq43", "(43)", sp.Derivative(sp.asin(G(u - 2 * n_int * K1, gamma)) + n_int * sp.pi, u),
+        Identity("eq43", "(43)",
+                 sp.Derivative(sp.asin(G(u - 2 * n_int * K1, gamma)) + n_int * sp.pi, u),
                  sp.sqrt(1 - gamma**2 * ((-1) ** n_int * G(u - 2 * n_int * K1, gamma)) ** 2),
                  positive_radicands=True, domain="|G| < 1"),
         Identity("eq45", "(45)", In(u + 2 * K1) - P * (u + 2 * K1), In(u) - P * u,
@@ -362,8 +372,8 @@ def printed_errata() -> list[Erratum]:
         ),
         Erratum(
             "§4, after (26)", "transcription", r"\theta_0 \div 0", r"\theta_0 \fallingdotseq 0",
-            None, None, "The text copy renders the Japanese 'approximately equal' sign as a division "
-            "sign (likewise the small-angle sign before (5)).",
+            None, None, "The text copy renders the Japanese 'approximately equal' sign as a "
+            "division sign (likewise the small-angle sign before (5)).",
         ),
         Erratum(
             "§5, before (27)", "typo",
