@@ -395,6 +395,15 @@ def printed_errata() -> list[Erratum]:
             "The printed right side is z/(1 - z^2). The antiderivative the note writes next, "
             "(1/2) log|(1 + z)/(1 - z)|, is that of the corrected sum, so (27) is right.",
         ),
+        Erratum(
+            "(41)", "notation",
+            r"\theta(t) = 2\hat I\left(\frac{\omega_0 t}{\gamma} + c_{4,1}, \gamma\right)",
+            r"\theta(t) = 2\hat I\left(\frac{\omega_0 t}{\gamma} + c_{4,0}, \gamma\right)",
+            None, None,
+            "Joining (35) and (39) into one motion forces c_{4,1} = c_{4,0} - 2 K_1(gamma); since "
+            "I-hat(u - 2 K_1) = I-hat(u) - pi, the printed constant gives the same motion lowered "
+            "by 2 pi, which is also a solution of (3).",
+        ),
     ]
 
 
