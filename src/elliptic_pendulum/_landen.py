@@ -82,6 +82,7 @@ class Constants(NamedTuple):
     """What the recurrence needs for one complementary modulus (or an array of them)."""
 
     kc: np.ndarray
+    quarter: np.ndarray  # K rounded to double
     k_hi: np.ndarray   # K = k_hi + k_mid + k_lo (quarter period), n*k_hi and n*k_mid exact
     k_mid: np.ndarray
     k_lo: np.ndarray
@@ -119,7 +120,7 @@ def _constants(kc: np.ndarray) -> Constants:
     k_hi = _chop(kh)
     k_mid = _chop(kh - k_hi + kl)
     k_lo = (kh - k_hi - k_mid) + kl
-    return Constants(kc, k_hi, k_mid, k_lo, ah, tuple(mu), tuple(nu))
+    return Constants(kc, kh + kl, k_hi, k_mid, k_lo, ah, tuple(mu), tuple(nu))
 
 
 @lru_cache(maxsize=256)
@@ -136,8 +137,7 @@ def constants(kc: np.ndarray) -> Constants:
 
 def quarter_period(kc: np.ndarray) -> np.ndarray:
     """K(k) from kc, correctly rounded in practice (double-double AGM)."""
-    c = constants(kc)
-    return (c.k_hi + c.k_mid) + c.k_lo
+    return constants(kc).quarter
 
 
 def reduce(u, c: Constants, u_lo=0.0):
@@ -145,7 +145,7 @@ def reduce(u, c: Constants, u_lo=0.0):
 
     Returns (n mod 4 as float, n, v).
     """
-    n = np.rint(u / (c.k_hi + c.k_mid + c.k_lo))
+    n = np.rint(u / c.quarter)
     v = ((u - n * c.k_hi) - n * c.k_mid) + (u_lo - n * c.k_lo)
     return np.mod(n, 4.0), n, v
 

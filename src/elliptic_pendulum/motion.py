@@ -194,16 +194,16 @@ def solve(theta0: Any, dtheta0: Any = 0.0, omega0: Any = 1.0) -> Motion:
         return Motion(st.regime, theta0, dtheta0, omega0, c1, 1.0, 0.0, math.pi, phase,
                       sgn, math.inf, st)
     if st.regime is Regime.LIBRATION:
-        kc = math.sqrt(st.kc2)
+        kc = st.kc
         quarter = float(_landen.quarter_period(kc))
         return Motion(st.regime, theta0, dtheta0, omega0, c1, st.k, kc,
                       2.0 * math.atan2(st.k, kc), libration_phase(st, quarter), 1,
                       4.0 * quarter / omega0, st)
     sgn = 1 if st.w > 0 else -1
-    gamma, gamma_c = 1.0 / st.k, math.sqrt(-st.kc2) / st.k
+    gamma, gamma_c = 1.0 / st.k, st.kc / st.k
     quarter = float(_landen.quarter_period(gamma_c))
     return Motion(st.regime, theta0, dtheta0, omega0, c1, gamma, gamma_c, math.inf,
-                  rotation_phase(st, sgn), sgn, 2.0 * quarter * gamma / omega0, st)
+                  rotation_phase(st, sgn, quarter), sgn, 2.0 * quarter * gamma / omega0, st)
 
 
 def _scalar_error(name: str) -> float:

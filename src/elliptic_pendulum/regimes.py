@@ -54,7 +54,7 @@ class State:
     c: float            # cos(r/2) >= 0
     w: float            # theta0' / (2 omega0)
     k: float            # sqrt(s^2 + w^2): alpha in II; 1/gamma in IV
-    kc2: float          # 1 - k^2, computed as (c - |w|)(c + |w|)
+    kc: float           # sqrt(|1 - k^2|) = sqrt(|c - |w||) sqrt(c + |w|)
 
 
 def _half_angle(theta: float) -> tuple[float, float, float]:
@@ -75,18 +75,20 @@ def classify(theta0: float, dtheta0: float, omega0: float) -> State:
     m, s, c = _half_angle(theta0)
     w = dtheta0 / (2.0 * omega0)
     aw = abs(w)
-    kc2 = (c - aw) * (c + aw)
+    # Compare c with |w| rather than test the sign of kc^2: the product can
+    # underflow to zero (w = 1e-300 at the top is a rotation, not the separatrix).
+    kc = math.sqrt(abs(c - aw)) * math.sqrt(c + aw)
     k = math.hypot(s, w)
     r = 2.0 * math.atan2(s, c)
     if s == 0.0 and w == 0.0:
         regime = Regime.REST
-    elif kc2 == 0.0:
+    elif c == aw:
         regime = Regime.SEPARATRIX
-    elif kc2 > 0.0:
+    elif c > aw:
         regime = Regime.LIBRATION
     else:
         regime = Regime.ROTATION
-    return State(regime, m, r, s, c, w, k, kc2)
+    return State(regime, m, r, s, c, w, k, kc)
 
 
 def libration_phase(st: State, quarter: float) -> float:
@@ -95,14 +97,19 @@ def libration_phase(st: State, quarter: float) -> float:
     F(phi) = sin(phi) R_F(cos^2 phi, 1 - alpha^2 sin^2 phi, 1) (DLMF 19.25.5),
     where alpha sin(phi) = s and 1 - alpha^2 sin^2 phi = c^2: no cancellation.
     """
-    f = abs(st.s) / st.k * float(special.elliprf((st.w / st.k) ** 2, st.c * st.c, 1.0))
+    if st.w == 0.0:  # a turning point: F(pi/2) = K, even where c*c underflows
+        f = quarter
+    else:
+        f = abs(st.s) / st.k * float(special.elliprf((st.w / st.k) ** 2, st.c * st.c, 1.0))
     sign = -1.0 if st.s < 0 else 1.0
     return sign * f if st.w >= 0 else sign * (2.0 * quarter - f)
 
 
-def rotation_phase(st: State, direction: float) -> float:
+def rotation_phase(st: State, direction: float, quarter: float) -> float:
     """c4 with am(c4, gamma) = direction * r / 2 (theta = direction * 2 am).
 
     With gamma = 1/k: 1 - gamma^2 sin^2(r/2) = w^2 / k^2, again no cancellation.
     """
+    if st.c == 0.0:  # passing the top: F(+-pi/2) = +-K, even where w*w underflows
+        return direction * st.s * quarter
     return direction * st.s * float(special.elliprf(st.c * st.c, (st.w / st.k) ** 2, 1.0))
