@@ -8,8 +8,16 @@ The public API (re-exports only; see each module for the mathematics):
 <Regime.LIBRATION: 'II'>
 """
 
-from .elliptic import (am, cn, complete_integral, dn, incomplete_integral,
-                       inverse_integral, jacobi, sn)
+from .elliptic import (
+                       am,
+                       cn,
+                       complete_integral,
+                       dn,
+                       incomplete_integral,
+                       inverse_integral,
+                       jacobi,
+                       sn,
+)
 from .mechanics import Pendulum
 from .motion import Motion, solve
 from .numerics import integrate

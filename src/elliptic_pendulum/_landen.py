@@ -22,7 +22,7 @@ the complementary modulus kc carries information:
 from __future__ import annotations
 
 from functools import lru_cache
-from typing import NamedTuple
+from typing import Any, NamedTuple
 
 import numpy as np
 
@@ -91,7 +91,7 @@ class Constants(NamedTuple):
     nu: tuple
 
 
-def _constants(kc: np.ndarray) -> Constants:
+def _constants(kc: Any) -> Constants:
     kc = np.asarray(kc, dtype=float)
     # Double precision AGM for the Landen recurrence. Stop as GSL does: once
     # a_n and b_n agree to a few ulp, further steps change nothing.
@@ -128,14 +128,14 @@ def _scalar_constants(kc: float) -> Constants:
     return _constants(np.float64(kc))
 
 
-def constants(kc: np.ndarray) -> Constants:
+def constants(kc: Any) -> Constants:
     """Landen constants for kc; cached when kc is a scalar (one modulus, many u)."""
     if np.ndim(kc) == 0:
         return _scalar_constants(float(kc))
     return _constants(kc)
 
 
-def quarter_period(kc: np.ndarray) -> np.ndarray:
+def quarter_period(kc: Any) -> Any:
     """K(k) from kc, correctly rounded in practice (double-double AGM)."""
     return constants(kc).quarter
 

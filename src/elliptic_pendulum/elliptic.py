@@ -335,7 +335,7 @@ def am(u: Any, k: Any, kc: Any = None) -> Any:
 
 
 def inverse_integral(u: Any, k: Any, kc: Any = None) -> Any:
-    r"""The note's G(u, k) (19): the inverse of E1 on [-K1(k), K1(k)].
+    r"""Invert E1 on [-K1(k), K1(k)]: the note's G(u, k) (19).
 
     .. math:: E_1(z, k) = u \iff z = G(u, k), \qquad |u| \le K_1(k)
 

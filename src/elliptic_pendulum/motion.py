@@ -24,8 +24,15 @@ import numpy as np
 from . import _landen
 from ._landen import _PI_HI, _PI_LO, _two_sum
 from ._validation import positive_scalar, real_array, scalar_or_array
-from .regimes import (_TWO_PI_HI, _TWO_PI_LO, Regime, State, classify,
-                      libration_phase, rotation_phase)
+from .regimes import (
+    _TWO_PI_HI,
+    _TWO_PI_LO,
+    Regime,
+    State,
+    classify,
+    libration_phase,
+    rotation_phase,
+)
 
 __all__ = ["Motion", "solve"]
 
@@ -72,7 +79,7 @@ class Motion:
 
     @property
     def beta(self) -> float:
-        """beta = c1 / (2 w0^2) of (29) (greater than 1 in regime IV)."""
+        """Beta = c1 / (2 w0^2) of (29) (greater than 1 in regime IV)."""
         return self.energy_constant / (2.0 * self.omega0 ** 2)
 
     @property
@@ -86,12 +93,12 @@ class Motion:
         return self.modulus if self.regime is Regime.ROTATION else None
 
     def theta(self, t: Any) -> Any:
-        """The angle theta(t) in radians; float or array like ``t``, any real t."""
+        """Return the angle theta(t) in radians; float or array like ``t``, any real t."""
         t = real_array(t, "t")
         return scalar_or_array(self._evaluate(t)[0], t)
 
     def dtheta(self, t: Any) -> Any:
-        """The angular velocity theta'(t); float or array like ``t``."""
+        """Return the angular velocity theta'(t); float or array like ``t``."""
         t = real_array(t, "t")
         return scalar_or_array(self._evaluate(t)[1], t)
 
@@ -127,7 +134,7 @@ class Motion:
 
 
 def solve(theta0: Any, dtheta0: Any = 0.0, omega0: Any = 1.0) -> Motion:
-    r"""The exact motion from the initial state (theta0, theta0') at t = 0.
+    r"""Solve (3) exactly from the initial state (theta0, theta0') at t = 0.
 
     .. math:: \theta'' = -\omega_0^2 \sin\theta, \qquad
               \theta(0) = \theta_0, \quad \theta'(0) = \theta_0'
@@ -180,8 +187,8 @@ def solve(theta0: Any, dtheta0: Any = 0.0, omega0: Any = 1.0) -> Motion:
     >>> solve(math.pi).theta(100.0) == math.pi
     True
     """
-    theta0 = float(real_array(theta0, "theta0")) if np.ndim(theta0) == 0 else _scalar_error("theta0")
-    dtheta0 = float(real_array(dtheta0, "dtheta0")) if np.ndim(dtheta0) == 0 else _scalar_error("dtheta0")
+    theta0 = _scalar(theta0, "theta0")
+    dtheta0 = _scalar(dtheta0, "dtheta0")
     omega0 = positive_scalar(omega0, "omega0")
     st = classify(theta0, dtheta0, omega0)
     c1 = dtheta0 ** 2 - 2.0 * omega0 ** 2 * math.cos(theta0)
@@ -206,6 +213,8 @@ def solve(theta0: Any, dtheta0: Any = 0.0, omega0: Any = 1.0) -> Motion:
                   rotation_phase(st, sgn, quarter), sgn, 2.0 * quarter * gamma / omega0, st)
 
 
-def _scalar_error(name: str) -> float:
-    raise TypeError(f"{name} must be a single real number (one initial state); "
-                    "call solve once per state")
+def _scalar(value: Any, name: str) -> float:
+    if np.ndim(value) != 0:
+        raise TypeError(f"{name} must be a single real number (one initial state); "
+                        "call solve once per state")
+    return float(real_array(value, name))
