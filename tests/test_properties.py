@@ -8,7 +8,6 @@ c1 = theta'^2 - 2 w0^2 cos theta, the period (26) and the turn of (46), and the 
 
 import math
 
-import numpy as np
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
