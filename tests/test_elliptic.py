@@ -127,9 +127,6 @@ def test_k_zero_is_trigonometric_to_an_ulp():
     assert np.max(np.abs(am(us, 0.0) - us) / np.maximum(np.abs(us), 1)) <= 4.5e-16
 
 
-@pytest.mark.xfail(strict=True, reason="src bug: k = 0 is not special-cased (elliptic.py's "
-                   "docstring says it is handled first, explicitly); sn(u, 0) differs from "
-                   "sin(u) by 1 ulp at about half the points")
 def test_k_zero_is_exactly_trigonometric():
     # The module promises the k = 0 edge "handled first, explicitly": exactly numpy's values.
     us = u_grid(1e4)
@@ -151,8 +148,6 @@ def test_kc_zero_is_exactly_hyperbolic(kwargs):
     np.testing.assert_array_equal(am(us, **kwargs), np.arctan(np.sinh(us)))
 
 
-@pytest.mark.xfail(strict=True, reason="src bug: jacobi/am at kc = 0 call np.cosh/np.sinh, "
-                   "which overflow for |u| > 710: RuntimeWarning (an error under pytest)")
 def test_kc_zero_large_argument_without_warnings():
     # tanh -> +-1, sech -> 0 and gd -> +-pi/2 as u -> +-inf: no overflow is involved.
     us = np.array([709.0, 711.0, -800.0, 1e4])
@@ -188,9 +183,6 @@ def test_complete_integral_to_a_few_ulp():
     assert complete_integral(0.0) == math.pi / 2
 
 
-@pytest.mark.xfail(strict=True, reason="src bug: complete_integral(1.0) (kc = 0) raises "
-                   "RuntimeError('AGM did not converge') instead of returning inf as documented; "
-                   "inverse_integral(0.5, 1.0) fails the same way")
 def test_complete_integral_is_infinite_at_k_one():
     # Its docstring: "inf at k = 1 (kc = 0)"; K1 diverges like log(4/kc) (DLMF 19.12.1).
     assert complete_integral(1.0) == math.inf

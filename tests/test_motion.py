@@ -124,9 +124,6 @@ def test_rotation_matches_mpmath(theta0, dtheta0, omega0):
     assert err_th <= 1e-12 and err_dth <= 1e-12, (err_th, err_dth)
 
 
-@pytest.mark.xfail(strict=True, reason="src bug: regimes.classify rounds w = dtheta0 / (2 omega0) "
-                   "before kc2 = (c - |w|)(c + |w|); when 2 omega0 is not a power of two the "
-                   "rounding error of w is amplified by 1/kc2 near the separatrix")
 @pytest.mark.parametrize(("theta0", "dtheta0", "omega0"), [
     (0.0, 2 * 2.5 * (1 + 1e-6), 2.5), (0.0, -2 * 2.5 * (1 + 1e-6), 2.5),
     (0.0, 2 * 0.3 * (1 + 1e-6), 0.3), (0.0, 2 * 2.5 * (1 - 1e-6), 2.5),
@@ -188,8 +185,6 @@ def test_separatrix_is_the_notes_28(omega0, direction):
     assert np.all(np.abs(dth - dref) <= 1e-15 * np.abs(dref) * (2 + omega0 * np.abs(ts)))
 
 
-@pytest.mark.xfail(strict=True, reason="src bug: motion's separatrix branch evaluates "
-                   "np.sinh/np.cosh(w0 t + c3), which overflow for |w0 t| > 710: RuntimeWarning")
 def test_separatrix_at_long_times_without_warnings():
     # theta -> +-pi and theta' -> 0 as t -> +-inf on the separatrix (28); nothing overflows.
     m = ep.solve(0.0, 2.0)

@@ -91,8 +91,11 @@ class Constants(NamedTuple):
     nu: tuple
 
 
-def _constants(kc: Any) -> Constants:
+def _constants(kc: Any, kc_lo: Any = 0.0) -> Constants:
     kc = np.asarray(kc, dtype=float)
+    top = kc == 0  # the separatrix: K = inf; run the AGM on a harmless stand-in
+    kc_lo = np.where(top, 0.0, kc_lo)
+    kc = np.where(top, 1.0, kc)
     # Double precision AGM for the Landen recurrence. Stop as GSL does: once
     # a_n and b_n agree to a few ulp, further steps change nothing.
     mu, nu = [np.ones_like(kc)], [kc.copy()]
@@ -102,36 +105,36 @@ def _constants(kc: Any) -> Constants:
         nu.append(np.sqrt(a * b))
         if len(mu) > 40:  # cannot happen for kc in (0, 1]; guards a bug
             raise RuntimeError("AGM did not converge")
-    # Double-double AGM for K itself.
+    # Double-double AGM for K itself, seeded with kc + kc_lo when the caller
+    # knows kc beyond double precision (an initial state of the pendulum).
     ah, al = np.ones_like(kc), np.zeros_like(kc)
-    bh, bl = kc.copy(), np.zeros_like(kc)
+    bh, bl = _fast_two_sum(kc, kc_lo + 0.0 * kc)
     for _ in range(60):
         dh, dl = _two_sum(ah, -bh)
-        if np.all(np.abs(dh + (dl + bl - al)) <= 1e-31 * ah):
+        if np.all(np.abs(dh + (dl + al - bl)) <= 1e-31 * ah):
             break
         sh, sl = _two_sum(ah, bh)
         gh, gl = _dd_sqrt(*_dd_mul(ah, al, bh, bl))
         ah, al = _fast_two_sum(0.5 * sh, 0.5 * (sl + al + bl))
         bh, bl = gh, gl
-    with np.errstate(divide="ignore"):
-        kh, kl = _dd_div(0.5 * _PI_HI + 0.0 * ah, 0.5 * _PI_LO + 0.0 * ah, ah, al)
-    kh = np.where(kc == 0, np.inf, kh)
-    kl = np.where(kc == 0, 0.0, kl)
+    kh, kl = _dd_div(0.5 * _PI_HI + 0.0 * ah, 0.5 * _PI_LO + 0.0 * ah, ah, al)
     k_hi = _chop(kh)
     k_mid = _chop(kh - k_hi + kl)
     k_lo = (kh - k_hi - k_mid) + kl
-    return Constants(kc, kh + kl, k_hi, k_mid, k_lo, ah, tuple(mu), tuple(nu))
+    return Constants(np.where(top, 0.0, kc), np.where(top, np.inf, kh + kl),
+                     np.where(top, np.inf, k_hi), np.where(top, 0.0, k_mid),
+                     np.where(top, 0.0, k_lo), ah, tuple(mu), tuple(nu))
 
 
 @lru_cache(maxsize=256)
-def _scalar_constants(kc: float) -> Constants:
-    return _constants(np.float64(kc))
+def _scalar_constants(kc: float, kc_lo: float) -> Constants:
+    return _constants(np.float64(kc), kc_lo)
 
 
-def constants(kc: Any) -> Constants:
-    """Landen constants for kc; cached when kc is a scalar (one modulus, many u)."""
+def constants(kc: Any, kc_lo: float = 0.0) -> Constants:
+    """Landen constants for kc (+ kc_lo); cached for a scalar kc (one modulus, many u)."""
     if np.ndim(kc) == 0:
-        return _scalar_constants(float(kc))
+        return _scalar_constants(float(kc), float(kc_lo))
     return _constants(kc)
 
 
@@ -169,3 +172,15 @@ def core(v, c: Constants):
     cn = dn / np.hypot(1.0, cc)
     sn = cn * cc / c.kc
     return sn, cn, dn, cc
+
+
+def sech(x):
+    """1 / cosh x; past |x| = 710 cosh overflows to inf and the quotient is 0, as it should be."""
+    with np.errstate(over="ignore"):
+        return 1.0 / np.cosh(x)
+
+
+def gudermannian(x):
+    """gd x = arctan(sinh x); sinh overflows to +-inf past 710 and arctan gives +-pi/2."""
+    with np.errstate(over="ignore"):
+        return np.arctan(np.sinh(x))

@@ -159,11 +159,18 @@ def _jacobi(u: np.ndarray, kc: np.ndarray, u_lo: Any = 0.0):
     if np.any(kc == 0):
         # kc = 0 is the separatrix: sn = tanh, cn = dn = sech, am = gd.
         uu = u + u_lo
-        sech = 1.0 / np.cosh(uu)
+        sech = _landen.sech(uu)
         sn_ = np.where(kc == 0, np.tanh(uu), sn_)
         cn_ = np.where(kc == 0, sech, cn_)
         dn_ = np.where(kc == 0, sech, dn_)
-        am_ = np.where(kc == 0, np.arctan(np.sinh(uu)), am_)
+        am_ = np.where(kc == 0, _landen.gudermannian(uu), am_)
+    if np.any(kc == 1):
+        # k = 0: the circular functions, exactly.
+        uu = u + u_lo
+        sn_ = np.where(kc == 1, np.sin(uu), sn_)
+        cn_ = np.where(kc == 1, np.cos(uu), cn_)
+        dn_ = np.where(kc == 1, 1.0, dn_)
+        am_ = np.where(kc == 1, uu, am_)
     return sn_, cn_, dn_, am_
 
 
@@ -192,7 +199,7 @@ def jacobi(u: Any, k: Any, kc: Any = None) -> tuple[Any, Any, Any]:
     Notes
     -----
     Against mpmath: sn and cn to about 1e-15 absolute and dn to a few
-    1e-15 relative, for |u| up to 1e4 and every kc from 1 down to 0.
+    1e-15 relative, for ``|u|`` up to 1e4 and every kc from 1 down to 0.
 
     Examples
     --------

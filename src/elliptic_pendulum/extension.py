@@ -5,8 +5,8 @@ extension (21) turns I = arcsin G into the amplitude am. The lemma's hypotheses
 (f'(a-0) = 0 for (20), f''(a-0) = 0 for (21)) are what make the extensions smooth;
 :func:`one_sided_derivatives` shows numerically what happens when they fail.
 
-Both extensions reduce x to r = x - 2na with |r| <= a. The reduction is exact for the given float a
-(an error-free product, then a Sterbenz subtraction), so for |x| up to 1e4 a the extension is as
+Both extensions reduce x to r = x - 2na with ``|r| <= a``. The reduction is exact for the given float a
+(an error-free product, then a Sterbenz subtraction), so for ``|x|`` up to 1e4 a the extension is as
 accurate as f itself; what remains is the error of a: n times the difference between the float a and
 the true one. Pass ``a`` as a pair ``(hi, lo)`` with a = hi + lo to remove that too.
 """
@@ -190,7 +190,7 @@ def one_sided_derivatives(g: Callable, x: float, order: int = 1, h: float | None
     order : {1, 2}
         Which derivative.
     h : float, optional
-        Step; default eps**(1/3) (order 1) or eps**(1/4) (order 2), times max(1, |x|).
+        Step; default eps**(1/3) (order 1) or eps**(1/4) (order 2), times ``max(1, |x|)``.
 
     Returns
     -------

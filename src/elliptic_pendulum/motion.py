@@ -22,7 +22,7 @@ from typing import Any
 import numpy as np
 
 from . import _landen
-from ._landen import _PI_HI, _PI_LO, _two_sum
+from ._landen import _PI_HI, _PI_LO, _two_sum, gudermannian, sech
 from ._validation import positive_scalar, real_array, scalar_or_array
 from .regimes import (
     _TWO_PI_HI,
@@ -110,13 +110,12 @@ class Motion:
             return np.full(t.shape, turns + st.r), np.zeros(t.shape)
         if self.regime is Regime.SEPARATRIX:
             x = w0 * t + self.phase
-            return (turns + sgn * 2.0 * np.arctan(np.sinh(x)),
-                    sgn * 2.0 * w0 / np.cosh(x))
+            return turns + sgn * 2.0 * gudermannian(x), sgn * 2.0 * w0 * sech(x)
         scale = w0 if self.regime is Regime.LIBRATION else w0 / self.modulus
         # u = scale t + phase, carried as a double-double so that the phase
         # survives thousands of periods.
         u, u_lo = _two_sum(scale * t, self.phase)
-        c = _landen.constants(self.complementary_modulus)
+        c = _landen.constants(self.complementary_modulus, st.mod_c_lo)
         q, n, v = _landen.reduce(u, c, u_lo)
         s, cc, d, ratio = _landen.core(v, c)
         odd = (q == 1.0) | (q == 3.0)
@@ -201,14 +200,14 @@ def solve(theta0: Any, dtheta0: Any = 0.0, omega0: Any = 1.0) -> Motion:
         return Motion(st.regime, theta0, dtheta0, omega0, c1, 1.0, 0.0, math.pi, phase,
                       sgn, math.inf, st)
     if st.regime is Regime.LIBRATION:
-        kc = st.kc
-        quarter = float(_landen.quarter_period(kc))
+        kc = st.mod_c
+        quarter = float(_landen.constants(kc, st.mod_c_lo).quarter)
         return Motion(st.regime, theta0, dtheta0, omega0, c1, st.k, kc,
                       2.0 * math.atan2(st.k, kc), libration_phase(st, quarter), 1,
                       4.0 * quarter / omega0, st)
     sgn = 1 if st.w > 0 else -1
-    gamma, gamma_c = 1.0 / st.k, st.kc / st.k
-    quarter = float(_landen.quarter_period(gamma_c))
+    gamma, gamma_c = 1.0 / st.k, st.mod_c
+    quarter = float(_landen.constants(gamma_c, st.mod_c_lo).quarter)
     return Motion(st.regime, theta0, dtheta0, omega0, c1, gamma, gamma_c, math.inf,
                   rotation_phase(st, sgn, quarter), sgn, 2.0 * quarter * gamma / omega0, st)
 

@@ -1,7 +1,7 @@
 r"""Classify an initial state into the note's regimes I-IV and parametrize it.
 
 The energy constant of (9) is :math:`c_1 = \theta'^2 - 2\omega_0^2\cos\theta`.
-The note splits on it: I (c1 = -2 w0^2, rest), II (|c1| < 2 w0^2, swinging),
+The note splits on it: I (c1 = -2 w0^2, rest), II (``|c1| < 2 w0^2``, swinging),
 III (c1 = 2 w0^2, the separatrix) and IV (c1 > 2 w0^2, rotating).
 
 Nothing here goes through c1, because c1 -> arccos -> sin loses every digit
@@ -10,7 +10,9 @@ and w = theta' / (2 omega0), the squared modulus and its complement are
 
 .. math:: k^2 = s^2 + w^2, \qquad k_c^2 = 1 - k^2 = (c - |w|)(c + |w|),
 
-each free of cancellation (DESIGN.md, "Never lose the energy"). Regime II has
+each free of cancellation (DESIGN.md, "Never lose the energy"). They are formed
+once per initial state with mpmath at 50 digits, so that even the rounding of
+cos(theta/2) and of theta'/(2 omega0) to double does not reach kc. Regime II has
 modulus alpha = k (14); regime IV has gamma = 1/k, and beta = 2 k^2 - 1 (29).
 
 The double nearest pi (``math.pi``) is taken to mean pi itself, so that
@@ -24,6 +26,7 @@ import enum
 import math
 from dataclasses import dataclass
 
+import mpmath
 from scipy import special
 
 from ._landen import _PI_HI, _PI_LO
@@ -49,46 +52,57 @@ class State:
 
     regime: Regime
     winding: float      # theta0 = 2 pi winding + r with r in [-pi, pi]
-    r: float
+    r: float            # rounded to double
     s: float            # sin(r/2)
     c: float            # cos(r/2) >= 0
     w: float            # theta0' / (2 omega0)
     k: float            # sqrt(s^2 + w^2): alpha in II; 1/gamma in IV
     kc: float           # sqrt(|1 - k^2|) = sqrt(|c - |w||) sqrt(c + |w|)
+    mod_c: float        # complement of the elliptic modulus: alpha_c (II), gamma_c (IV)
+    mod_c_lo: float     # its low part: mod_c + mod_c_lo to about 1e-32
 
 
-def _half_angle(theta: float) -> tuple[float, float, float]:
-    """Winding number m and (sin, cos) of r/2 where theta = 2 pi m + r, |r| <= pi."""
+def _reduce(theta: float) -> tuple[float, float]:
+    """Winding number m and r = theta - 2 pi m (as a double), |r| <= pi."""
     m = float(round(theta / _TWO_PI_HI))
     # Cody-Waite: m * 2pi_hi is exact for the |m| < 2**26 a pendulum ever needs.
-    r = (theta - m * _TWO_PI_HI) - m * _TWO_PI_LO
-    if abs(r) == _PI_HI:
-        return m, math.copysign(1.0, r), 0.0
-    # pi - |r| exactly (Sterbenz), then the true pi's tail: cos(r/2) keeps its
-    # relative accuracy up to 1e-16 rad below the top.
-    delta = (_PI_HI - abs(r)) + _PI_LO
-    return m, math.sin(0.5 * r), math.sin(0.5 * delta)
+    return m, (theta - m * _TWO_PI_HI) - m * _TWO_PI_LO
 
 
 def classify(theta0: float, dtheta0: float, omega0: float) -> State:
-    """Reduce (theta0, theta0') and find its regime without cancellation."""
-    m, s, c = _half_angle(theta0)
-    w = dtheta0 / (2.0 * omega0)
-    aw = abs(w)
-    # Compare c with |w| rather than test the sign of kc^2: the product can
-    # underflow to zero (w = 1e-300 at the top is a rotation, not the separatrix).
-    kc = math.sqrt(abs(c - aw)) * math.sqrt(c + aw)
-    k = math.hypot(s, w)
-    r = 2.0 * math.atan2(s, c)
-    if s == 0.0 and w == 0.0:
-        regime = Regime.REST
-    elif c == aw:
-        regime = Regime.SEPARATRIX
-    elif c > aw:
-        regime = Regime.LIBRATION
-    else:
-        regime = Regime.ROTATION
-    return State(regime, m, r, s, c, w, k, kc)
+    """Reduce (theta0, theta0') and find its regime without cancellation.
+
+    k^2 and kc^2 are formed once, at 50 digits, from the exact doubles of the
+    initial state: near the separatrix kc^2 = c^2 - w^2 is a difference of
+    nearly equal numbers, and rounding c or w to double first would be
+    multiplied by 1 / kc^2 there. The complement of the elliptic modulus is
+    kept as a double-double (kc_hi, kc_lo), which fixes K, hence the period,
+    to about 1e-32: the phase then stays right over thousands of periods.
+    """
+    m, r = _reduce(theta0)
+    with mpmath.workdps(50):
+        w = mpmath.mpf(dtheta0) / (2 * mpmath.mpf(omega0))
+        if abs(r) == _PI_HI:  # the double nearest pi means pi: exactly upside down
+            s, c = mpmath.mpf(math.copysign(1.0, r)), mpmath.mpf(0)
+        else:
+            half = (mpmath.mpf(theta0) - 2 * mpmath.pi * m) / 2
+            s, c = mpmath.sin(half), mpmath.cos(half)
+        k2, kc2 = s * s + w * w, (c - abs(w)) * (c + abs(w))
+        k, kc = mpmath.sqrt(k2), mpmath.sqrt(abs(kc2))
+        # The elliptic modulus: alpha = k in II (14); gamma = 1/k in IV.
+        mod_c = kc if kc2 > 0 else kc / k
+        if s == 0 and w == 0:
+            regime = Regime.REST
+        elif kc2 == 0:
+            regime = Regime.SEPARATRIX
+        elif kc2 > 0:
+            regime = Regime.LIBRATION
+        else:
+            regime = Regime.ROTATION
+        mod_c_hi = float(mod_c)
+        mod_c_lo = float(mod_c - mod_c_hi)
+        return State(regime, m, r, float(s), float(c), float(w), float(k), float(kc),
+                     mod_c_hi, mod_c_lo)
 
 
 def libration_phase(st: State, quarter: float) -> float:
