@@ -10,7 +10,6 @@ exit status 0.
 from __future__ import annotations
 
 import os
-import re
 import shlex
 import shutil
 import subprocess
