@@ -34,6 +34,11 @@ nb_execution_show_tb = True
 nb_execution_timeout = 120
 nb_merge_streams = True
 
+# --- sphinx-proof ----------------------------------------------------------------------
+# The note numbers its statements in one sequence (Proposition 1, Lemma 2): lemmas share the
+# propositions' counter.
+prf_realtyp_to_countertyp = {"lemma": "proposition"}
+
 # --- Bibliography -----------------------------------------------------------------------
 bibtex_bibfiles = ["references.bib"]
 bibtex_default_style = "unsrt"

@@ -123,8 +123,8 @@ def _period(parser: _Parser, args: argparse.Namespace) -> None:
 
 
 def _crossing(args: argparse.Namespace) -> None:
-    for value, angle in zip(args.value, np.atleast_1d(crossing_angle(args.value)), strict=True):
-        print(f"R = {value:g} at theta0 = {math.degrees(angle):.9f} deg")
+    for value in args.value:  # one at a time, so an error names the offending value
+        print(f"R = {value:g} at theta0 = {math.degrees(crossing_angle(value)):.9f} deg")
 
 
 def _solve(parser: _Parser, args: argparse.Namespace) -> None:
@@ -138,9 +138,12 @@ def _solve(parser: _Parser, args: argparse.Namespace) -> None:
         theta, dtheta = np.degrees(theta), np.degrees(dtheta)
     unit = "rad" if args.rad else "deg"
     kind = "time per revolution" if motion.regime.value == "IV" else "period"
-    when = "infinite" if math.isinf(motion.period) else f"{motion.period:.10g} s"
+    # Without --omega0 or --length, omega0 = 1: time is counted in units of sqrt(l/g).
+    second = "s" if omega0 is not None else "sqrt(l/g)"
+    when = "infinite" if math.isinf(motion.period) else f"{motion.period:.10g} {second}"
     print(f"# regime {motion.regime.value} ({motion.regime.name.lower()}), {kind} {when}")
-    print(f"{'t':>12}  {'theta/' + unit:>16}  {'theta_dot/' + unit + '/s':>18}")
+    rate = unit + "/" + ("s" if omega0 is not None else "unit")
+    print(f"{'t':>12}  {'theta/' + unit:>16}  {'theta_dot/' + rate:>18}")
     for row in zip(t, theta, dtheta, strict=True):
         t_k, theta_k, dtheta_k = (float(x) + 0.0 for x in row)  # + 0.0: no "-0.000"
         print(f"{t_k:>12.6f}  {theta_k:>16.9f}  {dtheta_k:>18.9f}")

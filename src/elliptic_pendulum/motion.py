@@ -22,7 +22,7 @@ from typing import Any
 import numpy as np
 
 from . import _landen
-from ._landen import _PI_HI, _PI_LO, _two_sum, gudermannian, sech
+from ._landen import _PI_HI, _PI_LO, _two_prod, _two_sum, gudermannian, sech
 from ._validation import positive_scalar, real_array, scalar_or_array
 from .regimes import (
     _TWO_PI_HI,
@@ -111,10 +111,16 @@ class Motion:
         if self.regime is Regime.SEPARATRIX:
             x = w0 * t + self.phase
             return turns + sgn * 2.0 * gudermannian(x), sgn * 2.0 * w0 * sech(x)
-        scale = w0 if self.regime is Regime.LIBRATION else w0 / self.modulus
-        # u = scale t + phase, carried as a double-double so that the phase
-        # survives thousands of periods.
-        u, u_lo = _two_sum(scale * t, self.phase)
+        # u = scale t + phase with scale = w0 (II) or w0 / gamma = w0 k (IV), carried
+        # as a double-double: the phase then survives thousands of periods.
+        if self.regime is Regime.LIBRATION:
+            scale, scale_lo = w0, 0.0
+        else:
+            scale, scale_lo = _two_prod(w0, st.k)
+            scale_lo += w0 * st.k_lo
+        p, p_lo = _two_prod(scale, t)
+        u, u_lo = _two_sum(p, self.phase)
+        u_lo = u_lo + (p_lo + scale_lo * t)
         c = _landen.constants(self.complementary_modulus, st.mod_c_lo)
         q, n, v = _landen.reduce(u, c, u_lo)
         s, cc, d, ratio = _landen.core(v, c)

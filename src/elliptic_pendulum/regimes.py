@@ -57,6 +57,7 @@ class State:
     c: float            # cos(r/2) >= 0
     w: float            # theta0' / (2 omega0)
     k: float            # sqrt(s^2 + w^2): alpha in II; 1/gamma in IV
+    k_lo: float         # its low part (k + k_lo to about 1e-32)
     kc: float           # sqrt(|1 - k^2|) = sqrt(|c - |w||) sqrt(c + |w|)
     mod_c: float        # complement of the elliptic modulus: alpha_c (II), gamma_c (IV)
     mod_c_lo: float     # its low part: mod_c + mod_c_lo to about 1e-32
@@ -82,13 +83,17 @@ def classify(theta0: float, dtheta0: float, omega0: float) -> State:
     m, r = _reduce(theta0)
     with mpmath.workdps(50):
         w = mpmath.mpf(dtheta0) / (2 * mpmath.mpf(omega0))
-        if abs(r) == _PI_HI:  # the double nearest pi means pi: exactly upside down
+        # The double nearest pi (and -pi) means pi: exactly upside down. Decided on
+        # theta0 itself: the reduced r of a neighbouring double can round to pi too.
+        if abs(theta0) == _PI_HI:
+            r = math.copysign(_PI_HI, theta0)
             s, c = mpmath.mpf(math.copysign(1.0, r)), mpmath.mpf(0)
         else:
             half = (mpmath.mpf(theta0) - 2 * mpmath.pi * m) / 2
             s, c = mpmath.sin(half), mpmath.cos(half)
         k2, kc2 = s * s + w * w, (c - abs(w)) * (c + abs(w))
         k, kc = mpmath.sqrt(k2), mpmath.sqrt(abs(kc2))
+        k_hi = float(k)
         # The elliptic modulus: alpha = k in II (14); gamma = 1/k in IV.
         mod_c = kc if kc2 > 0 else kc / k
         if s == 0 and w == 0:
@@ -101,8 +106,8 @@ def classify(theta0: float, dtheta0: float, omega0: float) -> State:
             regime = Regime.ROTATION
         mod_c_hi = float(mod_c)
         mod_c_lo = float(mod_c - mod_c_hi)
-        return State(regime, m, r, float(s), float(c), float(w), float(k), float(kc),
-                     mod_c_hi, mod_c_lo)
+        return State(regime, m, r, float(s), float(c), float(w), k_hi, float(k - k_hi),
+                     float(kc), mod_c_hi, mod_c_lo)
 
 
 def libration_phase(st: State, quarter: float) -> float:
