@@ -5,9 +5,9 @@ extension (21) turns I = arcsin G into the amplitude am. The lemma's hypotheses
 (f'(a-0) = 0 for (20), f''(a-0) = 0 for (21)) are what make the extensions smooth;
 :func:`one_sided_derivatives` shows numerically what happens when they fail.
 
-Both extensions reduce x to r = x - 2na with ``|r| <= a``. The reduction is exact for the given float a
-(an error-free product, then a Sterbenz subtraction), so for ``|x|`` up to 1e4 a the extension is as
-accurate as f itself; what remains is the error of a: n times the difference between the float a and
+Both extensions reduce x to r = x - 2na with ``|r| <= a``. The reduction is exact for the given
+float a (an error-free product, then a Sterbenz subtraction), so for ``|x|`` up to 1e4 a the
+extension is as accurate as f itself; what remains is the error of a: n times the difference between the float a and
 the true one. Pass ``a`` as a pair ``(hi, lo)`` with a = hi + lo to remove that too.
 """
 
@@ -17,22 +17,9 @@ from collections.abc import Callable
 
 import numpy as np
 
+from ._landen import _two_prod as _two_product  # Dekker's error-free product
+
 __all__ = ["periodic_extension", "staircase_extension", "one_sided_derivatives", "derivative_jump"]
-
-_SPLITTER = 134217729.0  # 2**27 + 1: Veltkamp's split of a double into two 26-bit halves
-
-
-def _two_product(x, y):
-    """Return p, e with p = fl(x*y) and x*y = p + e exactly (Dekker's algorithm)."""
-    p = x * y
-    cx = _SPLITTER * x
-    xh = cx - (cx - x)
-    xl = x - xh
-    cy = _SPLITTER * y
-    yh = cy - (cy - y)
-    yl = y - yh
-    return p, ((xh * yh - p) + xh * yl + xl * yh) + xl * yl
-
 
 def _validate(f, a):
     if not callable(f):
