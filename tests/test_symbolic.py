@@ -16,7 +16,8 @@ import pytest
 import sympy as sp
 
 from elliptic_pendulum import symbolic
-from elliptic_pendulum.symbolic import Identity, identities, identity, printed_errata
+from elliptic_pendulum.errata import printed_errata
+from elliptic_pendulum.symbolic import Identity, identities, identity
 
 IDENTITIES = identities()
 ERRATA = printed_errata()

@@ -175,12 +175,12 @@ def core(v, c: Constants):
 
 
 def sech(x):
-    """1 / cosh x; past |x| = 710 cosh overflows to inf and the quotient is 0, as it should be."""
+    """Return 1 / cosh x; past |x| = 710 cosh overflows to inf and the quotient is 0."""
     with np.errstate(over="ignore"):
         return 1.0 / np.cosh(x)
 
 
 def gudermannian(x):
-    """gd x = arctan(sinh x); sinh overflows to +-inf past 710 and arctan gives +-pi/2."""
+    """Return gd x = arctan(sinh x); past |x| = 710 sinh is +-inf and arctan gives +-pi/2."""
     with np.errstate(over="ignore"):
         return np.arctan(np.sinh(x))

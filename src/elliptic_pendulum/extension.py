@@ -7,8 +7,9 @@ extension (21) turns I = arcsin G into the amplitude am. The lemma's hypotheses
 
 Both extensions reduce x to r = x - 2na with ``|r| <= a``. The reduction is exact for the given
 float a (an error-free product, then a Sterbenz subtraction), so for ``|x|`` up to 1e4 a the
-extension is as accurate as f itself; what remains is the error of a: n times the difference between the float a and
-the true one. Pass ``a`` as a pair ``(hi, lo)`` with a = hi + lo to remove that too.
+extension is as accurate as f itself; what remains is the error of a: n times the difference
+between the float a and the true one. Pass ``a`` as a pair ``(hi, lo)`` with a = hi + lo to
+remove that too.
 """
 
 from __future__ import annotations

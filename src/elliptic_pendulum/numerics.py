@@ -53,8 +53,8 @@ def integrate(theta0: Any, dtheta0: Any = 0.0, omega0: Any = 1.0, *, t: Any,
         Initial angular velocity; default 0.
     omega0 : float, optional
         :math:`\sqrt{g/\ell}` of (6), positive; default 1.
-    t : float or array_like, keyword-only
-        Output times, in any order and of any shape; negative times are reached by
+    t : float or array_like
+        Output times (keyword-only), in any order and of any shape; negative times are reached by
         integrating backwards from 0.
     rtol, atol : float, optional
         Tolerances passed to :func:`scipy.integrate.solve_ivp`; defaults 1e-10 and 1e-12.

@@ -12,7 +12,8 @@ phase portrait of (9) (Fig. 2, :func:`phase_portrait`).
 from __future__ import annotations
 
 import math
-from typing import Any, Sequence
+from collections.abc import Sequence
+from typing import Any
 
 import numpy as np
 
@@ -32,8 +33,10 @@ def _axes(ax: Any = None) -> Any:
 
 
 def pendulum_sketch(theta: float = 0.55, ax: Any = None) -> Any:
-    """Fig. 1: rod of length l from the origin, the bob at (l sin θ, -l cos θ) (1),
-    the tension T along the rod towards the pivot and the weight mg.
+    """Draw Fig. 1: the pendulum with its angle, tension and weight.
+
+    The rod of length l hangs from the origin, the bob sits at (l sin θ, -l cos θ) (1),
+    the tension T points along the rod towards the pivot and the weight mg down.
 
     Examples
     --------
@@ -117,7 +120,8 @@ def phase_portrait(omega0: float = 1.0, ax: Any = None,
         m = solve(math.radians(deg), 0.0, omega0)
         th, dth = _orbit(m)
         for s in shifts:
-            ax.plot(th + s, dth, color="C0", lw=1, label="II" if (s == 0 and deg == amplitudes_deg[0]) else None)
+            first = s == 0 and i == 0
+            ax.plot(th + s, dth, color="C0", lw=1, label="II" if first else None)
         if label:
             # Inline labels at theta = 0, alternately on the upper and the lower half of the
             # curves: near the separatrix the curves are too close for one label above another.
@@ -159,10 +163,10 @@ def phase_portrait(omega0: float = 1.0, ax: Any = None,
 
 def plot_motion(motions: Motion | Sequence[Motion], t: Any, axes: Any = None,
                 compare: bool = True, labels: Sequence[str] | None = None) -> Any:
-    """θ(t) and θ'(t) from the closed form, with the numerical integration
-    (:func:`elliptic_pendulum.numerics.integrate`, DOP853) as dots if ``compare``.
+    """Plot θ(t) and θ'(t) from the closed form, one line per motion.
 
-    Returns the pair of axes.
+    With ``compare``, the numerical integration (:func:`elliptic_pendulum.numerics.integrate`,
+    DOP853) is drawn as dots on top. Returns the pair of axes.
     """
     if isinstance(motions, Motion):
         motions = [motions]
@@ -187,10 +191,10 @@ def plot_motion(motions: Motion | Sequence[Motion], t: Any, axes: Any = None,
 
 
 def plot_jacobi(k: float, u: Any, ax: Any = None, kc: float | None = None) -> Any:
-    """sn, cn and dn over the given u (several periods), modulus k (or kc)."""
+    """Plot sn, cn and dn over the given u (several periods), modulus k (or kc)."""
     ax = _axes(ax)
     u = np.asarray(u, dtype=float)
-    for name, values in zip(("sn", "cn", "dn"), jacobi(u, k, kc=kc)):
+    for name, values in zip(("sn", "cn", "dn"), jacobi(u, k, kc=kc), strict=True):
         ax.plot(u, values, label=rf"$\mathrm{{{name}}}(u, {k:g})$")
     K = complete_integral(k, kc=kc)
     for j in range(int(u.min() // K), int(u.max() // K) + 1):
@@ -201,7 +205,7 @@ def plot_jacobi(k: float, u: Any, ax: Any = None, kc: float | None = None) -> An
 
 
 def plot_integral(moduli: Sequence[float] = (0.5, 0.9, 0.99), ax: Any = None) -> Any:
-    """E1(z, k) of (17) on [-1, 1] beside arcsin z = E1(z, 0) (Proposition 1)."""
+    """Plot E1(z, k) of (17) on [-1, 1] beside arcsin z = E1(z, 0) (Proposition 1)."""
     ax = _axes(ax)
     z = np.linspace(-1, 1, 401)
     ax.plot(z, np.arcsin(z), "k--", label=r"$\arcsin z$")
@@ -213,7 +217,7 @@ def plot_integral(moduli: Sequence[float] = (0.5, 0.9, 0.99), ax: Any = None) ->
 
 
 def plot_inverse(moduli: Sequence[float] = (0.5, 0.9, 0.99), ax: Any = None) -> Any:
-    """G(u, k) of (19) on [-K1, K1] beside sin u on [-π/2, π/2]."""
+    """Plot G(u, k) of (19) on [-K1, K1] beside sin u on [-π/2, π/2]."""
     ax = _axes(ax)
     u = np.linspace(-math.pi / 2, math.pi / 2, 201)
     ax.plot(u, np.sin(u), "k--", label=r"$\sin u$")
@@ -227,8 +231,10 @@ def plot_inverse(moduli: Sequence[float] = (0.5, 0.9, 0.99), ax: Any = None) -> 
 
 
 def plot_amplitude(k: float, u: Any, ax: Any = None) -> Any:
-    r"""am(u, k) = Î of (41), its linear part τu with τ = π/(2K1) (45), and the
-    periodic remainder am(u) - τu."""
+    r"""Plot am(u, k) = Î of (41) with its linear part and its periodic remainder.
+
+    The linear part is τu with τ = π/(2K1) (45); the remainder am(u) - τu has period 2K1.
+    """
     ax = _axes(ax)
     u = np.asarray(u, dtype=float)
     tau = math.pi / (2 * complete_integral(k))

@@ -29,7 +29,7 @@ from dataclasses import dataclass
 import mpmath
 from scipy import special
 
-from ._landen import _PI_HI, _PI_LO
+from ._landen import _PI_HI
 
 __all__ = ["Regime", "State", "classify"]
 
