@@ -33,6 +33,8 @@ nb_execution_show_tb = True
 # Per cell, seconds: the slowest cells (mpmath references, solve_ivp comparisons) take a few s.
 nb_execution_timeout = 120
 nb_merge_streams = True
+# Markdown that a cell displays (the errata catalogue) is parsed as MyST, so its $...$ is math.
+nb_render_markdown_format = "myst"
 
 # --- sphinx-proof ----------------------------------------------------------------------
 # The note numbers its statements in one sequence (Proposition 1, Lemma 2): lemmas share the

@@ -156,8 +156,9 @@ def phase_portrait(omega0: float = 1.0, ax: Any = None,
     ax.set_xticks(np.arange(-3, 4) * math.pi,
                   [rf"${i}\pi$" if i not in (0, 1, -1) else ("0", r"$\pi$", r"$-\pi$")[i]
                    for i in range(-3, 4)])
-    ax.legend(loc="upper right", fontsize=8, title=r"regime ($c_1/\omega_0^2$ on curves)",
-              title_fontsize=8)
+    # Below the axes, in one row: inside, it would hide the rotations' curves.
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=4, fontsize=8, frameon=False,
+              title=r"regime (the labels on the curves are $c_1/\omega_0^2$)", title_fontsize=8)
     return ax
 
 
