@@ -346,3 +346,14 @@ def test_zz_report_worst_errors(capsys):
     with capsys.disabled():
         for name, value in sorted(WORST.items()):
             print(f"\n  worst {name}: {value:.2e}", end="")
+
+
+@pytest.mark.parametrize("kc", [1e-300, 1e-310, 1e-320, 5e-324])
+def test_subnormal_kc_is_the_hyperbolic_limit(kc):
+    # For kc below 2**-60 the functions on |v| <= K/2 are tanh, sech, sech to a relative
+    # kc / 2 (DLMF 22.10.8-10), while the Landen recurrence would start from a subnormal kc.
+    us = np.linspace(-30.0, 30.0, 61)
+    s, c, d = jacobi(us, 1.0, kc=kc)
+    np.testing.assert_allclose(s, np.tanh(us), rtol=4e-16, atol=0)
+    np.testing.assert_allclose(c, 1 / np.cosh(us), rtol=4e-15, atol=0)
+    np.testing.assert_allclose(d, 1 / np.cosh(us), rtol=4e-15, atol=0)

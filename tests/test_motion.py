@@ -206,7 +206,7 @@ def test_singular_solution_stays_at_the_top(theta0):
     np.testing.assert_array_equal(m.dtheta(ts), np.zeros_like(ts))
 
 
-@pytest.mark.parametrize("dtheta0", [1e-160, -1e-170, 1e-300])
+@pytest.mark.parametrize("dtheta0", [1e-160, -1e-170, 1e-299])
 def test_tiny_push_at_the_top(dtheta0):
     # Any push at the top, however small, makes it go over (IV, c1 > 2 w0^2); here
     # 1 - k^2 = -w^2 underflows, so it must be compared as c against |w| (regression test).
@@ -277,3 +277,49 @@ def test_zz_report_worst_errors(capsys):
     with capsys.disabled():
         for name, value in sorted(WORST.items()):
             print(f"\n  worst {name}: {value:.2e}", end="")
+
+
+# --- regressions from the review: odd multiples of pi, extreme scales, huge angles ----------
+
+@pytest.mark.parametrize("theta0", [3 * math.pi, -3 * math.pi, 7 * math.pi, 1e3, -1e6 + 0.5])
+def test_winding_number_of_far_angles_matches_mpmath(theta0, monkeypatch):
+    # theta0 = 2 pi m + r with m = nint(theta0 / 2 pi) taken exactly: 3 * math.pi / (2 pi)
+    # rounds to 1.5 in floating point, and round-half-even once picked the wrong turn
+    # (the pendulum then swung about 4 pi instead of 2 pi). Reference: mpmath through (25),
+    # at 90 digits: 3 * math.pi is 3.7e-16 from the top, where mpmath's K near m = 1 needs them.
+    monkeypatch.setitem(globals(), "DPS", 90)
+    _, err_th, err_dth = compare(theta0, 0.0, 1.0, periods=3, record=False)
+    assert err_th <= 1e-12 and err_dth <= 1e-12, (err_th, err_dth)
+
+
+def test_amplitude_of_a_huge_angle_is_exact():
+    # 1e50 rad taken as the exact double it is: r = 1e50 - 2 pi m at 120 digits (mpmath).
+    with mpmath.workdps(120):
+        x = mpmath.mpf(1e50)
+        r = float(abs(x - 2 * mpmath.pi * mpmath.nint(x / (2 * mpmath.pi))))
+    assert ep.solve(1e50).amplitude == pytest.approx(r, rel=1e-15)
+
+
+def test_tiny_omega0_is_a_free_rotation():
+    # omega0 = 1e-302: gravity is negligible and theta(t) = theta0 + theta0' t; the rate
+    # omega0 / gamma is formed at 50 digits (a double product would overflow in Dekker's split).
+    m = ep.solve(1.0, 1.0, 1e-302)
+    assert m.regime is Regime.ROTATION
+    assert m.theta(1.0) == pytest.approx(2.0, rel=1e-15)
+    assert m.period == pytest.approx(2 * math.pi, rel=1e-15)
+
+
+@pytest.mark.parametrize(("theta0", "dtheta0", "omega0", "t"), [
+    (1.0, 0.0, 1.0, 1e302), (1.0, 5.0, 1.0, -1e300), (0.1, 0.0, 1e10, 1e300)])
+def test_times_beyond_range_raise(theta0, dtheta0, omega0, t):
+    # Beyond |omega0 t| ~ 1e290 the elliptic argument cannot be formed: a ValueError naming t,
+    # not an overflow warning and a NaN.
+    with pytest.raises(ValueError, match="t is too large"):
+        ep.solve(theta0, dtheta0, omega0).theta(t)
+
+
+@pytest.mark.parametrize("dtheta0", [5e-324, 1e-310, -1e-301])
+def test_push_below_the_double_range_at_the_top_raises(dtheta0):
+    # kc = |theta0'| / (2 omega0) would be subnormal: its period cannot be computed in double.
+    with pytest.raises(ValueError, match="dtheta0"):
+        ep.solve(math.pi, dtheta0)

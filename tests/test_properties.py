@@ -8,16 +8,18 @@ c1 = theta'^2 - 2 w0^2 cos theta, the period (26) and the turn of (46), and the 
 
 import math
 
+import mpmath
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 import elliptic_pendulum as ep
 from elliptic_pendulum import Regime
 
-theta0s = st.floats(-10.0, 10.0, allow_nan=False)
-# Velocities below 1e-150 in size (but not 0) are left to test_motion.py: at theta0 = pi the
-# energy 1 - k^2 = -w^2 underflows there (a known src bug, tested there as such).
-dtheta0s = st.floats(-5.0, 5.0, allow_nan=False).filter(lambda x: x == 0 or abs(x) > 1e-150)
+# Angles far out and the odd multiples of pi (as doubles, within 1e-15 of the top) too.
+theta0s = st.one_of(st.floats(-10.0, 10.0, allow_nan=False), st.floats(-1e3, 1e3),
+                    st.sampled_from([3 * math.pi, -3 * math.pi, 7 * math.pi, -math.pi]))
+# Pushes below 1e-290 at the top are refused with a ValueError (test_motion.py tests that).
+dtheta0s = st.floats(-5.0, 5.0, allow_nan=False).filter(lambda x: x == 0 or abs(x) > 1e-290)
 omega0s = st.floats(0.1, 10.0, allow_nan=False)
 times = st.floats(-20.0, 20.0, allow_nan=False)
 
@@ -75,7 +77,11 @@ def test_energy_9_is_conserved(theta0, dtheta0, omega0, t):
     c1 = dth**2 - 2 * omega0**2 * math.cos(th)
     scale = 2 * omega0**2 + speed_scale(m) ** 2
     assert abs(c1 - m.energy_constant) <= 1e-12 * scale * (1 + abs(th) / 10)
-    assert m.energy_constant == dtheta0**2 - 2 * omega0**2 * math.cos(theta0)
+    # energy_constant itself is (9) at t = 0, correctly rounded: mpmath at 50 digits.
+    with mpmath.workdps(50):
+        exact = (mpmath.mpf(dtheta0) ** 2
+                 - 2 * mpmath.mpf(omega0) ** 2 * mpmath.cos(mpmath.mpf(theta0)))
+    assert abs(m.energy_constant - float(exact)) <= math.ulp(float(exact)) + 1e-300
 
 
 @SETTINGS

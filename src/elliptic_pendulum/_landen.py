@@ -153,8 +153,14 @@ def reduce(u, c: Constants, u_lo=0.0):
     return np.mod(n, 4.0), n, v
 
 
+# Below this kc, sn, cn, dn on |v| <= K/2 are tanh v, sech v, sech v to a relative
+# kc/2 (DLMF 22.10.8-10: the corrections are kc^2 sinh^2 v <= kc), while the
+# recurrence would start from a subnormal kc and lose its digits.
+_TINY_KC = 2.0 ** -60
+
+
 def core(v, c: Constants):
-    """sn, cn, dn at |v| <= K/2 (plus a hair) by the descending Landen recurrence.
+    """sn, cn, dn and kc sc at |v| <= K/2 (plus a hair) by the descending Landen recurrence.
 
     Relative accuracy: every operation after the tangent multiplies or
     divides positive numbers or adds numbers of one sign.
@@ -171,7 +177,35 @@ def core(v, c: Constants):
     dn = c.kc / d
     cn = dn / np.hypot(1.0, cc)
     sn = cn * cc / c.kc
+    tiny = c.kc < _TINY_KC
+    if np.any(tiny):
+        sech_v = sech(v)
+        sn = np.where(tiny, np.tanh(v), sn)
+        cn = np.where(tiny, sech_v, cn)
+        dn = np.where(tiny, sech_v, dn)
+        cc = np.where(tiny, c.kc * np.sinh(v), cc)
     return sn, cn, dn, cc
+
+
+def evaluate(u, c: Constants, u_lo=0.0, amplitude: bool = False):
+    """sn, cn, dn (and am if ``amplitude``) at u + u_lo for kc in (0, 1].
+
+    Reduces u by quarter periods, evaluates at |v| <= K/2 and shifts back by
+    DLMF 22.4.3: sn(v + K) = cd v, cn(v + K) = -kc sd v, dn(v + K) = kc nd v,
+    and sn, cn change sign under v -> v + 2K.
+    """
+    q, n, v = reduce(u, c, u_lo)
+    s, cn_v, dn_v, ratio = core(v, c)
+    odd = (q == 1.0) | (q == 3.0)
+    sign = np.where(q >= 2.0, -1.0, 1.0)
+    sn = sign * np.where(odd, cn_v / dn_v, s)
+    cn = sign * np.where(odd, -c.kc * s / dn_v, cn_v)
+    dn = np.where(odd, c.kc / dn_v, dn_v)
+    if not amplitude:
+        return sn, cn, dn, None
+    # am(v + n K) = n pi/2 + (am v, or arctan(kc sc v) for odd n); ratio = kc sc v.
+    am = np.where(odd, np.arctan(ratio), np.arctan2(s, cn_v))
+    return sn, cn, dn, (n * (0.5 * _PI_HI) + am) + n * (0.5 * _PI_LO)
 
 
 def sech(x):

@@ -139,38 +139,25 @@ def incomplete_integral(z: Any, k: Any, kc: Any = None) -> Any:
     return scalar_or_array(out, z, kc)
 
 
-def _jacobi(u: np.ndarray, kc: np.ndarray, u_lo: Any = 0.0):
-    """sn, cn, dn, am for validated float arrays; kc in [0, 1]."""
-    safe = np.where(kc == 0, 1.0, kc)
-    c = _landen.constants(safe)
-    q, n, v = _landen.reduce(u, c, u_lo)
-    s, cc, d, ratio = _landen.core(v, c)
-    odd = (q == 1) | (q == 3)
-    neg = q >= 2
-    # DLMF 22.4.3: sn(v + K) = cd v, cn(v + K) = -kc sd v, dn(v + K) = kc nd v.
-    sn_ = np.where(odd, cc / d, s)
-    cn_ = np.where(odd, -safe * s / d, cc)
-    dn_ = np.where(odd, safe / d, d)
-    sn_ = np.where(neg, -sn_, sn_)
-    cn_ = np.where(neg, -cn_, cn_)
-    # am(v + n K) = n pi/2 + (am v or arctan(kc sc v)); ratio = kc sc v.
-    am_ = np.where(odd, np.arctan(ratio), np.arctan2(s, cc))
-    am_ = (n * (0.5 * _landen._PI_HI) + am_) + n * (0.5 * _landen._PI_LO)
+def _jacobi(u: np.ndarray, kc: np.ndarray, amplitude: bool = False):
+    """sn, cn, dn (and am if asked) for validated float arrays; kc in [0, 1]."""
+    c = _landen.constants(np.where(kc == 0, 1.0, kc))
+    sn_, cn_, dn_, am_ = _landen.evaluate(u, c, amplitude=amplitude)
     if np.any(kc == 0):
         # kc = 0 is the separatrix: sn = tanh, cn = dn = sech, am = gd.
-        uu = u + u_lo
-        sech = _landen.sech(uu)
-        sn_ = np.where(kc == 0, np.tanh(uu), sn_)
+        sech = _landen.sech(u)
+        sn_ = np.where(kc == 0, np.tanh(u), sn_)
         cn_ = np.where(kc == 0, sech, cn_)
         dn_ = np.where(kc == 0, sech, dn_)
-        am_ = np.where(kc == 0, _landen.gudermannian(uu), am_)
+        if amplitude:
+            am_ = np.where(kc == 0, _landen.gudermannian(u), am_)
     if np.any(kc == 1):
         # k = 0: the circular functions, exactly.
-        uu = u + u_lo
-        sn_ = np.where(kc == 1, np.sin(uu), sn_)
-        cn_ = np.where(kc == 1, np.cos(uu), cn_)
+        sn_ = np.where(kc == 1, np.sin(u), sn_)
+        cn_ = np.where(kc == 1, np.cos(u), cn_)
         dn_ = np.where(kc == 1, 1.0, dn_)
-        am_ = np.where(kc == 1, uu, am_)
+        if amplitude:
+            am_ = np.where(kc == 1, u, am_)
     return sn_, cn_, dn_, am_
 
 
@@ -338,7 +325,7 @@ def am(u: Any, k: Any, kc: Any = None) -> Any:
     """
     u = real_array(u, "u")
     k, kc = modulus_pair(k, kc)
-    return scalar_or_array(_jacobi(u, kc)[3], u, kc)
+    return scalar_or_array(_jacobi(u, kc, amplitude=True)[3], u, kc)
 
 
 def inverse_integral(u: Any, k: Any, kc: Any = None) -> Any:

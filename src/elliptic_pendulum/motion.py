@@ -22,11 +22,9 @@ from typing import Any
 import numpy as np
 
 from . import _landen
-from ._landen import _PI_HI, _PI_LO, _two_prod, _two_sum, gudermannian, sech
+from ._landen import _two_prod, _two_sum, gudermannian, sech
 from ._validation import positive_scalar, real_array, scalar_or_array
 from .regimes import (
-    _TWO_PI_HI,
-    _TWO_PI_LO,
     Regime,
     State,
     classify,
@@ -79,8 +77,8 @@ class Motion:
 
     @property
     def beta(self) -> float:
-        """Beta = c1 / (2 w0^2) of (29) (greater than 1 in regime IV)."""
-        return self.energy_constant / (2.0 * self.omega0 ** 2)
+        """Return the note's beta = c1 / (2 w0^2) of (29), greater than 1 in regime IV."""
+        return self._state.beta
 
     @property
     def alpha(self) -> float | None:
@@ -104,38 +102,31 @@ class Motion:
 
     def _evaluate(self, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         st, w0, sgn = self._state, self.omega0, self.direction
-        turns = st.winding * _TWO_PI_HI + st.winding * _TWO_PI_LO
         if self.regime is Regime.REST or (self.regime is Regime.SEPARATRIX
                                           and st.w == 0.0):
-            return np.full(t.shape, turns + st.r), np.zeros(t.shape)
+            return np.full(t.shape, st.turns + st.r), np.zeros(t.shape)
         if self.regime is Regime.SEPARATRIX:
-            x = w0 * t + self.phase
-            return turns + sgn * 2.0 * gudermannian(x), sgn * 2.0 * w0 * sech(x)
-        # u = scale t + phase with scale = w0 (II) or w0 / gamma = w0 k (IV), carried
-        # as a double-double: the phase then survives thousands of periods.
-        if self.regime is Regime.LIBRATION:
-            scale, scale_lo = w0, 0.0
-        else:
-            scale, scale_lo = _two_prod(w0, st.k)
-            scale_lo += w0 * st.k_lo
-        p, p_lo = _two_prod(scale, t)
+            with np.errstate(over="ignore"):  # w0 t = +-inf still means theta = +-pi
+                x = w0 * t + self.phase
+            return st.turns + sgn * 2.0 * gudermannian(x), sgn * 2.0 * w0 * sech(x)
+        # u = rate t + phase, with rate = w0 (II) or w0 / gamma = w0 k (IV) known to
+        # 1e-32, carried as a double-double: the phase survives thousands of periods.
+        with np.errstate(over="ignore"):  # an overflow here is exactly what is reported
+            in_range = np.all(np.abs(t) * st.rate <= 1e290)  # beyond, Dekker's split overflows
+        if not in_range:
+            raise ValueError("t is too large: |omega0 t| must stay below about 1e290 "
+                             "(the elliptic argument grows like omega0 t)")
+        p, p_lo = _two_prod(st.rate, t)
         u, u_lo = _two_sum(p, self.phase)
-        u_lo = u_lo + (p_lo + scale_lo * t)
+        u_lo = u_lo + (p_lo + st.rate_lo * t)
         c = _landen.constants(self.complementary_modulus, st.mod_c_lo)
-        q, n, v = _landen.reduce(u, c, u_lo)
-        s, cc, d, ratio = _landen.core(v, c)
-        odd = (q == 1.0) | (q == 3.0)
-        flip = np.where(q >= 2.0, -1.0, 1.0)
-        kc, k = self.complementary_modulus, self.modulus
-        if self.regime is Regime.LIBRATION:
-            # theta/2 = atan2(k sn, dn); at u = v + K: sn = cn v / dn v, dn = kc / dn v.
-            half = np.arctan2(np.where(odd, k * cc, k * s), np.where(odd, kc, d))
-            cn = np.where(odd, -kc * s / d, cc)
-            return turns + 2.0 * flip * half, 2.0 * w0 * k * flip * cn
-        am = np.where(odd, np.arctan(ratio), np.arctan2(s, cc))
-        am = (n * (0.5 * _PI_HI) + am) + n * (0.5 * _PI_LO)
-        dn = np.where(odd, kc / d, d)
-        return turns + sgn * 2.0 * am, sgn * 2.0 * scale * dn
+        rotation = self.regime is Regime.ROTATION
+        sn, cn, dn, am = _landen.evaluate(u, c, u_lo, amplitude=rotation)
+        if rotation:  # (46): theta = +-2 am, theta' = +-2 (w0 / gamma) dn
+            return st.turns + sgn * 2.0 * am, sgn * 2.0 * st.rate * dn
+        # (25) as theta / 2 = atan2(alpha sn, dn): arcsin near 1 would halve the digits.
+        k = self.modulus
+        return st.turns + 2.0 * np.arctan2(k * sn, dn), 2.0 * w0 * k * cn
 
 
 def solve(theta0: Any, dtheta0: Any = 0.0, omega0: Any = 1.0) -> Motion:
@@ -196,7 +187,16 @@ def solve(theta0: Any, dtheta0: Any = 0.0, omega0: Any = 1.0) -> Motion:
     dtheta0 = _scalar(dtheta0, "dtheta0")
     omega0 = positive_scalar(omega0, "omega0")
     st = classify(theta0, dtheta0, omega0)
-    c1 = dtheta0 ** 2 - 2.0 * omega0 ** 2 * math.cos(theta0)
+    if not st.rate < 1e290:
+        raise ValueError("dtheta0 / omega0 and omega0 are too large together: the rate "
+                         "omega0 * max(1, |dtheta0| / (2 omega0)) must stay below 1e290")
+    if st.regime in (Regime.LIBRATION, Regime.ROTATION) and st.mod_c < 1e-300:
+        # Only a push of under 1e-300 rad/s at the very top gets here: kc would be subnormal
+        # and K = log(4/kc) (hence the period) would lose its digits.
+        raise ValueError("dtheta0 is too small for a state this close to the top: the "
+                         "complementary modulus falls below 1e-300; use dtheta0 = 0 "
+                         "(balanced at the top) or |dtheta0| >= 2e-300 * omega0")
+    c1 = st.c1
     if st.regime is Regime.REST:
         return Motion(st.regime, theta0, dtheta0, omega0, c1, 0.0, 1.0, 0.0, 0.0, 1,
                       2.0 * math.pi / omega0, st)
@@ -215,7 +215,7 @@ def solve(theta0: Any, dtheta0: Any = 0.0, omega0: Any = 1.0) -> Motion:
     gamma, gamma_c = 1.0 / st.k, st.mod_c
     quarter = float(_landen.constants(gamma_c, st.mod_c_lo).quarter)
     return Motion(st.regime, theta0, dtheta0, omega0, c1, gamma, gamma_c, math.inf,
-                  rotation_phase(st, sgn, quarter), sgn, 2.0 * quarter * gamma / omega0, st)
+                  rotation_phase(st, sgn, quarter), sgn, 2.0 * quarter / st.rate, st)
 
 
 def _scalar(value: Any, name: str) -> float:

@@ -33,8 +33,6 @@ from ._landen import _PI_HI
 
 __all__ = ["Regime", "State", "classify"]
 
-_TWO_PI_HI = 6.283185307179586
-_TWO_PI_LO = 2.4492935982947064e-16
 
 
 class Regime(enum.Enum):
@@ -52,50 +50,53 @@ class State:
 
     regime: Regime
     winding: float      # theta0 = 2 pi winding + r with r in [-pi, pi]
+    turns: float        # 2 pi winding, rounded once
     r: float            # rounded to double
     s: float            # sin(r/2)
     c: float            # cos(r/2) >= 0
     w: float            # theta0' / (2 omega0)
     k: float            # sqrt(s^2 + w^2): alpha in II; 1/gamma in IV
-    k_lo: float         # its low part (k + k_lo to about 1e-32)
-    kc: float           # sqrt(|1 - k^2|) = sqrt(|c - |w||) sqrt(c + |w|)
+    s_k: float          # s / k and w / k: sin and cos of the initial elliptic amplitude
+    w_k: float
     mod_c: float        # complement of the elliptic modulus: alpha_c (II), gamma_c (IV)
     mod_c_lo: float     # its low part: mod_c + mod_c_lo to about 1e-32
+    rate: float         # d(argument)/dt: omega0 in II, omega0 / gamma = omega0 k in IV
+    rate_lo: float      # its low part
+    c1: float           # the energy constant (9), 2 omega0^2 (2 k^2 - 1)
+    beta: float         # c1 / (2 omega0^2) = 2 k^2 - 1, the note's beta of (29)
 
 
-def _reduce(theta: float) -> tuple[float, float]:
-    """Winding number m and r = theta - 2 pi m (as a double), |r| <= pi."""
-    m = float(round(theta / _TWO_PI_HI))
-    # Cody-Waite: m * 2pi_hi is exact for the |m| < 2**26 a pendulum ever needs.
-    return m, (theta - m * _TWO_PI_HI) - m * _TWO_PI_LO
+def _split(x: mpmath.mpf) -> tuple[float, float]:
+    hi = float(x)
+    return hi, float(x - hi)
 
 
 def classify(theta0: float, dtheta0: float, omega0: float) -> State:
     """Reduce (theta0, theta0') and find its regime without cancellation.
 
-    k^2 and kc^2 are formed once, at 50 digits, from the exact doubles of the
-    initial state: near the separatrix kc^2 = c^2 - w^2 is a difference of
-    nearly equal numbers, and rounding c or w to double first would be
-    multiplied by 1 / kc^2 there. The complement of the elliptic modulus is
-    kept as a double-double (kc_hi, kc_lo), which fixes K, hence the period,
-    to about 1e-32: the phase then stays right over thousands of periods.
+    k^2 and kc^2 are formed once, at 50 digits beyond the size of theta0, from
+    the exact doubles of the initial state: near the separatrix kc^2 = c^2 - w^2
+    is a difference of nearly equal numbers, and rounding c or w to double
+    first would be multiplied by 1 / kc^2 there. The complement of the elliptic
+    modulus and the rate of the elliptic argument are kept as double-doubles,
+    which fix K, hence the period, and the phase to about 1e-32: the phase then
+    stays right over thousands of periods.
     """
-    m, r = _reduce(theta0)
-    with mpmath.workdps(50):
-        w = mpmath.mpf(dtheta0) / (2 * mpmath.mpf(omega0))
+    digits = 50 + int(max(0.0, mpmath.mag(theta0)) * 0.302)  # 2 pi m must be exact too
+    with mpmath.workdps(digits):
+        w0 = mpmath.mpf(omega0)
+        w = mpmath.mpf(dtheta0) / (2 * w0)
+        m = mpmath.nint(mpmath.mpf(theta0) / (2 * mpmath.pi))
         # The double nearest pi (and -pi) means pi: exactly upside down. Decided on
         # theta0 itself: the reduced r of a neighbouring double can round to pi too.
         if abs(theta0) == _PI_HI:
-            r = math.copysign(_PI_HI, theta0)
-            s, c = mpmath.mpf(math.copysign(1.0, r)), mpmath.mpf(0)
+            r = mpmath.pi if theta0 > 0 else -mpmath.pi
+            s, c = mpmath.mpf(math.copysign(1.0, theta0)), mpmath.mpf(0)
         else:
-            half = (mpmath.mpf(theta0) - 2 * mpmath.pi * m) / 2
-            s, c = mpmath.sin(half), mpmath.cos(half)
+            r = mpmath.mpf(theta0) - 2 * mpmath.pi * m
+            s, c = mpmath.sin(r / 2), mpmath.cos(r / 2)
         k2, kc2 = s * s + w * w, (c - abs(w)) * (c + abs(w))
         k, kc = mpmath.sqrt(k2), mpmath.sqrt(abs(kc2))
-        k_hi = float(k)
-        # The elliptic modulus: alpha = k in II (14); gamma = 1/k in IV.
-        mod_c = kc if kc2 > 0 else kc / k
         if s == 0 and w == 0:
             regime = Regime.REST
         elif kc2 == 0:
@@ -104,10 +105,14 @@ def classify(theta0: float, dtheta0: float, omega0: float) -> State:
             regime = Regime.LIBRATION
         else:
             regime = Regime.ROTATION
-        mod_c_hi = float(mod_c)
-        mod_c_lo = float(mod_c - mod_c_hi)
-        return State(regime, m, r, float(s), float(c), float(w), k_hi, float(k - k_hi),
-                     float(kc), mod_c_hi, mod_c_lo)
+        # The elliptic modulus: alpha = k in II (14); gamma = 1/k in IV.
+        mod_c, rate = (kc, w0) if kc2 > 0 else (kc / k, w0 * k)
+        ratio = (s / k, w / k) if k != 0 else (mpmath.mpf(0), mpmath.mpf(1))
+        return State(regime, float(m), float(2 * mpmath.pi * m),
+                     float(r) if regime is not Regime.REST else 0.0,
+                     float(s), float(c), float(w), float(k), float(ratio[0]),
+                     float(ratio[1]), *_split(mod_c), *_split(rate),
+                     float(2 * w0 * w0 * (2 * k2 - 1)), float(2 * k2 - 1))
 
 
 def libration_phase(st: State, quarter: float) -> float:
@@ -119,7 +124,7 @@ def libration_phase(st: State, quarter: float) -> float:
     if st.w == 0.0:  # a turning point: F(pi/2) = K, even where c*c underflows
         f = quarter
     else:
-        f = abs(st.s) / st.k * float(special.elliprf((st.w / st.k) ** 2, st.c * st.c, 1.0))
+        f = abs(st.s_k) * float(special.elliprf(st.w_k ** 2, st.c * st.c, 1.0))
     sign = -1.0 if st.s < 0 else 1.0
     return sign * f if st.w >= 0 else sign * (2.0 * quarter - f)
 
@@ -131,4 +136,4 @@ def rotation_phase(st: State, direction: float, quarter: float) -> float:
     """
     if st.c == 0.0:  # passing the top: F(+-pi/2) = +-K, even where w*w underflows
         return direction * st.s * quarter
-    return direction * st.s * float(special.elliprf(st.c * st.c, (st.w / st.k) ** 2, 1.0))
+    return direction * st.s * float(special.elliprf(st.c * st.c, st.w_k ** 2, 1.0))
