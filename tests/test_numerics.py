@@ -81,7 +81,7 @@ def test_other_methods():
 
 @pytest.mark.parametrize("kwargs, error, name", [
     ({"theta0": float("nan")}, ValueError, "theta0"),
-    ({"theta0": [1.0, 2.0]}, ValueError, "theta0"),
+    ({"theta0": [1.0, 2.0]}, TypeError, "theta0"),  # as solve(): one state, not an array
     ({"theta0": "1"}, TypeError, "theta0"),
     ({"dtheta0": float("inf")}, ValueError, "dtheta0"),
     ({"omega0": 0.0}, ValueError, "omega0"),

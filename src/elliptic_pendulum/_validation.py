@@ -12,7 +12,7 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["real_array", "modulus_pair", "positive_scalar", "scalar_or_array"]
+__all__ = ["real_array", "real_scalar", "modulus_pair", "positive_scalar", "scalar_or_array"]
 
 
 def real_array(value: Any, name: str) -> np.ndarray:
@@ -43,6 +43,15 @@ def real_array(value: Any, name: str) -> np.ndarray:
     if not np.all(np.isfinite(arr)):
         raise ValueError(f"{name} must be finite (no NaN or infinity)")
     return arr
+
+
+def real_scalar(value: Any, name: str) -> float:
+    """Return ``value`` as one finite float; an array is refused with TypeError naming ``name``."""
+    array = real_array(value, name)
+    if array.ndim != 0:
+        raise TypeError(f"{name} must be a single real number (one initial state), "
+                        f"got an array of shape {array.shape}; call once per state")
+    return float(array)
 
 
 def modulus_pair(k: Any, kc: Any = None) -> tuple[np.ndarray, np.ndarray]:

@@ -23,7 +23,7 @@ import numpy as np
 
 from . import _landen
 from ._landen import _two_prod, _two_sum, gudermannian, sech
-from ._validation import positive_scalar, real_array, scalar_or_array
+from ._validation import positive_scalar, real_array, real_scalar, scalar_or_array
 from .regimes import (
     Regime,
     State,
@@ -183,8 +183,8 @@ def solve(theta0: Any, dtheta0: Any = 0.0, omega0: Any = 1.0) -> Motion:
     >>> solve(math.pi).theta(100.0) == math.pi
     True
     """
-    theta0 = _scalar(theta0, "theta0")
-    dtheta0 = _scalar(dtheta0, "dtheta0")
+    theta0 = real_scalar(theta0, "theta0")
+    dtheta0 = real_scalar(dtheta0, "dtheta0")
     omega0 = positive_scalar(omega0, "omega0")
     st = classify(theta0, dtheta0, omega0)
     if not st.rate < 1e290:
@@ -216,10 +216,3 @@ def solve(theta0: Any, dtheta0: Any = 0.0, omega0: Any = 1.0) -> Motion:
     quarter = float(_landen.constants(gamma_c, st.mod_c_lo).quarter)
     return Motion(st.regime, theta0, dtheta0, omega0, c1, gamma, gamma_c, math.inf,
                   rotation_phase(st, sgn, quarter), sgn, 2.0 * quarter / st.rate, st)
-
-
-def _scalar(value: Any, name: str) -> float:
-    if np.ndim(value) != 0:
-        raise TypeError(f"{name} must be a single real number (one initial state); "
-                        "call solve once per state")
-    return float(real_array(value, name))

@@ -13,17 +13,9 @@ from typing import Any
 import numpy as np
 from scipy import integrate as _integrate
 
-from ._validation import positive_scalar, real_array, scalar_or_array
+from ._validation import positive_scalar, real_array, real_scalar, scalar_or_array
 
 __all__ = ["integrate"]
-
-
-def _scalar(value: Any, name: str) -> float:
-    array = real_array(value, name)
-    if array.ndim != 0:
-        raise ValueError(f"{name} must be a single real number (one initial state), "
-                         f"got an array of shape {array.shape}")
-    return float(array)
 
 
 def _run(rhs, state, end, times, method, rtol, atol):
@@ -99,7 +91,7 @@ def integrate(theta0: Any, dtheta0: Any = 0.0, omega0: Any = 1.0, *, t: Any,
     >>> bool(np.max(np.abs(c1 - motion.energy_constant)) < 1e-8)
     True
     """
-    theta0, dtheta0 = _scalar(theta0, "theta0"), _scalar(dtheta0, "dtheta0")
+    theta0, dtheta0 = real_scalar(theta0, "theta0"), real_scalar(dtheta0, "dtheta0")
     omega0 = positive_scalar(omega0, "omega0")
     rtol, atol = positive_scalar(rtol, "rtol"), positive_scalar(atol, "atol")
     times = real_array(t, "t")

@@ -18,14 +18,14 @@ import math
 import numpy as np
 from scipy import optimize
 
-from ._validation import positive_scalar, real_array
+from ._landen import _PI_LO
+from ._validation import positive_scalar, real_array, scalar_or_array
 from .elliptic import complete_integral
 
 __all__ = ["agm_period", "crossing_angle", "period", "period_ratio", "small_angle_period"]
 
 # pi - np.pi: the part of pi a double cannot hold. Adding it back turns a distance x from the
 # true pi into the correctly rounded amplitude pi - x, which matters within 1e-9 degrees of 180.
-_PI_LO = 1.2246467991473532e-16
 # Distance to pi of the largest double below it; R there (23.67) is the largest R whose
 # crossing angle a double resolves.
 _SMALLEST_DISTANCE = math.pi - math.nextafter(math.pi, 0.0) + _PI_LO
@@ -47,10 +47,6 @@ def _amplitudes(theta0):
     if np.any((theta0 < 0) | (theta0 >= math.pi)):
         raise ValueError(f"theta0 must be {valid}; got {theta0.tolist()!r}")
     return theta0
-
-
-def _out(array):  # Python floats for scalars: NumPy 2 prints np.float64(...) in doctests
-    return float(array) if np.ndim(array) == 0 else array
 
 
 def period_ratio(theta0):
@@ -117,7 +113,7 @@ def period_ratio(theta0):
     half = 0.5 * theta0
     k_integral = complete_integral(np.sin(half), kc=np.cos(half))
     # Dividing by the double pi/2 (not multiplying by 2/pi) gives R(0) == 1.0 exactly.
-    return _out(np.asarray(k_integral) / (0.5 * math.pi))
+    return scalar_or_array(np.asarray(k_integral) / (0.5 * math.pi), theta0)
 
 
 def small_angle_period(omega0):
@@ -175,7 +171,8 @@ def period(theta0, omega0=1.0):
     1.18
     """
     omega0 = positive_scalar(omega0, "omega0")
-    return _out(period_ratio(theta0) * (2 * math.pi / omega0))
+    ratio = period_ratio(theta0)
+    return scalar_or_array(np.asarray(ratio) * (2 * math.pi / omega0), np.asarray(ratio))
 
 
 def _agm(a, b):
@@ -227,7 +224,7 @@ def agm_period(theta0, omega0=1.0):
     """
     theta0 = _amplitudes(theta0)
     omega0 = positive_scalar(omega0, "omega0")
-    return _out(2 * math.pi / (omega0 * _agm(1.0, np.cos(0.5 * theta0))))
+    return scalar_or_array(2 * math.pi / (omega0 * _agm(1.0, np.cos(0.5 * theta0))), theta0)
 
 
 def _ratio_near_top(x):
@@ -294,4 +291,4 @@ def crossing_angle(value):
             x = optimize.brentq(lambda x, v=target: _ratio_near_top(x) - v, _SMALLEST_DISTANCE,
                                 math.pi, xtol=1e-300, rtol=4 * np.finfo(float).eps)
             angles[index] = (math.pi - x) + _PI_LO
-    return _out(angles)
+    return scalar_or_array(angles, values)
