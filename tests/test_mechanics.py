@@ -134,3 +134,10 @@ def test_refuses_a_motion_of_another_pendulum():
     p, q = Pendulum(1.0), Pendulum(2.0)
     with pytest.raises(ValueError, match="omega0"):
         p.tension(q.solve(1.0), 0.0)
+
+
+@pytest.mark.parametrize(("length", "g"), [(1e-320, 9.81), (1e300, 1e-300)])
+def test_omega0_out_of_range_names_length_and_g(length, g):
+    # Each parameter is fine on its own, but omega0 = sqrt(g / length) would be inf or 0.
+    with pytest.raises(ValueError, match="g / length"):
+        Pendulum(length, g=g)

@@ -145,7 +145,9 @@ def _solve(parser: _Parser, args: argparse.Namespace) -> None:
     rate = unit + "/" + ("s" if omega0 is not None else "unit")
     print(f"{'t':>12}  {'theta/' + unit:>16}  {'theta_dot/' + rate:>18}")
     for row in zip(t, theta, dtheta, strict=True):
-        t_k, theta_k, dtheta_k = (float(x) + 0.0 for x in row)  # + 0.0: no "-0.000"
+        # round() first, + 0.0 then: a value like -1e-17 prints as 0, not as "-0.000...".
+        t_k, theta_k, dtheta_k = (round(float(x), n) + 0.0 for x, n in zip(row, (6, 9, 9),
+                                                                           strict=True))
         print(f"{t_k:>12.6f}  {theta_k:>16.9f}  {dtheta_k:>18.9f}")
 
 

@@ -66,6 +66,11 @@ class Pendulum:
         for name in ("length", "g", "mass"):
             # object.__setattr__: the dataclass is frozen, and the check stores plain floats.
             object.__setattr__(self, name, positive_scalar(getattr(self, name), name))
+        # g / length can overflow or underflow although each is fine: say so in their names.
+        ratio = self.g / self.length
+        if not (0.0 < ratio < math.inf):
+            raise ValueError("g / length must be a finite number > 0 (omega0 = sqrt(g / length)), "
+                             f"got g = {self.g!r}, length = {self.length!r}")
 
     @property
     def omega0(self) -> float:
