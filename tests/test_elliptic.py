@@ -357,3 +357,24 @@ def test_subnormal_kc_is_the_hyperbolic_limit(kc):
     np.testing.assert_allclose(s, np.tanh(us), rtol=4e-16, atol=0)
     np.testing.assert_allclose(c, 1 / np.cosh(us), rtol=4e-15, atol=0)
     np.testing.assert_allclose(d, 1 / np.cosh(us), rtol=4e-15, atol=0)
+
+
+def test_modulus_from_k_alone_keeps_the_period_exact():
+    # From k alone kc = sqrt((1-k)(1+k)) is formed as a double-double: rounded to a double it
+    # moved K1 by an ulp, and dn(9413, 0.967) lost three digits (2.7e-13; the claim is 1e-13).
+    # Reference: mpmath at 60 digits with m = k**2 from the exact double k.
+    for u, k in [(-9413.21912212555, 0.9670360584102484), (9976.049752648036, 0.9028689008371945)]:
+        with mpmath.workdps(60):
+            m = mpmath.mpf(k) ** 2
+            ref = [float(mpmath.ellipfun(f, mpmath.mpf(u), m=m)) for f in ("sn", "cn", "dn")]
+        s, c, d = jacobi(u, k)
+        assert abs(s - ref[0]) <= 1e-15 and abs(c - ref[1]) <= 1e-15
+        assert abs(d / ref[2] - 1) <= 1e-15
+
+
+def test_incomplete_integral_at_one_is_k1_even_for_tiny_kc():
+    # E1(+-1, k) = +-K1 (18); Carlson's R_F underflows to inf for kc < 1.5e-154.
+    K = complete_integral(1.0, kc=1e-300)
+    assert incomplete_integral(1.0, 1.0, kc=1e-300) == K
+    assert incomplete_integral(-1.0, 1.0, kc=1e-300) == -K
+    assert K == pytest.approx(math.log(4 / 1e-300), rel=1e-15)  # DLMF 19.12.1

@@ -171,3 +171,23 @@ def test_solve_accepts_numpy_and_integer_scalars():
     b = ep.solve(0.5, 0.0, float(np.float32(2.0)))
     assert a.theta(1.3) == b.theta(1.3)
     assert ep.solve(1, 0, 1).regime is ep.Regime.LIBRATION
+
+
+# --- from the second review: inputs past the range of doubles, arguments past exact reduction --
+
+@pytest.mark.parametrize("call", [
+    lambda: ep.sn(10**400, 0.5), lambda: ep.sn([10**400], 0.5),
+    lambda: ep.solve(10**400), lambda: ep.solve(0.0, 10**400)])
+def test_python_ints_beyond_doubles_raise_valueerror(call):
+    # float(10**400) raises OverflowError; the library reports a ValueError naming the parameter.
+    with pytest.raises(ValueError, match="finite"):
+        call()
+
+
+@pytest.mark.parametrize(("call", "name"), [
+    (lambda: ep.sn(1e12, 0.5), "u"), (lambda: ep.jacobi(1e19, 1.0, kc=1e-300), "u"),
+    (lambda: ep.solve(1.0).theta(1e12), "t"), (lambda: ep.solve(0.5, 0.0, 1e-300).theta(6e300), "t")])
+def test_arguments_past_exact_reduction_raise(call, name):
+    # Beyond 2**26 quarter periods n K1 is no longer exact: an error, not digits that are not there.
+    with pytest.raises(ValueError, match=f"^{name} is too large"):
+        call()

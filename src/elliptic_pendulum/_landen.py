@@ -131,16 +131,32 @@ def _scalar_constants(kc: float, kc_lo: float) -> Constants:
     return _constants(np.float64(kc), kc_lo)
 
 
-def constants(kc: Any, kc_lo: float = 0.0) -> Constants:
+def constants(kc: Any, kc_lo: Any = 0.0) -> Constants:
     """Landen constants for kc (+ kc_lo); cached for a scalar kc (one modulus, many u)."""
-    if np.ndim(kc) == 0:
+    if np.ndim(kc) == 0 and np.ndim(kc_lo) == 0:
         return _scalar_constants(float(kc), float(kc_lo))
-    return _constants(kc)
+    return _constants(kc, kc_lo)
 
 
-def quarter_period(kc: Any) -> Any:
-    """K(k) from kc, correctly rounded in practice (double-double AGM)."""
-    return constants(kc).quarter
+def complement(k: Any) -> tuple[Any, Any]:
+    """Kc = sqrt((1 - k)(1 + k)) as a double-double (hi, lo), for a modulus given as k.
+
+    Rounding kc to a double moves K by about one ulp, and that error grows with
+    every period of u: sn(1e4, k) would lose three digits. With the low part
+    the AGM is seeded with kc to about 1e-32.
+    """
+    k = np.asarray(k, dtype=float)
+    a, a_lo = _two_sum(1.0, -k)
+    b, b_lo = _two_sum(1.0, k)
+    p, p_lo = _dd_mul(a, a_lo, b, b_lo)
+    with np.errstate(divide="ignore", invalid="ignore"):  # k = 1: kc = 0 exactly
+        hi, lo = _dd_sqrt(p, p_lo)
+    return np.where(p == 0, 0.0, hi), np.where(p == 0, 0.0, lo)
+
+
+def quarter_period(kc: Any, kc_lo: Any = 0.0) -> Any:
+    """K(k) from kc (+ kc_lo), correctly rounded in practice (double-double AGM)."""
+    return constants(kc, kc_lo).quarter
 
 
 def reduce(u, c: Constants, u_lo=0.0):
@@ -157,6 +173,8 @@ def reduce(u, c: Constants, u_lo=0.0):
 # kc/2 (DLMF 22.10.8-10: the corrections are kc^2 sinh^2 v <= kc), while the
 # recurrence would start from a subnormal kc and lose its digits.
 _TINY_KC = 2.0 ** -60
+# n * k_hi and n * k_mid are exact while |n| < 2**26 (they have 26 significant bits).
+_MAX_QUARTERS = 2.0 ** 26
 
 
 def core(v, c: Constants):
@@ -183,18 +201,24 @@ def core(v, c: Constants):
         sn = np.where(tiny, np.tanh(v), sn)
         cn = np.where(tiny, sech_v, cn)
         dn = np.where(tiny, sech_v, dn)
-        cc = np.where(tiny, c.kc * np.sinh(v), cc)
+        with np.errstate(over="ignore"):  # |v| > 710 only for |u| past exact reduction
+            cc = np.where(tiny, c.kc * np.sinh(v), cc)
     return sn, cn, dn, cc
 
 
-def evaluate(u, c: Constants, u_lo=0.0, amplitude: bool = False):
+def evaluate(u, c: Constants, u_lo=0.0, amplitude: bool = False, name: str = "u"):
     """sn, cn, dn (and am if ``amplitude``) at u + u_lo for kc in (0, 1].
 
     Reduces u by quarter periods, evaluates at |v| <= K/2 and shifts back by
     DLMF 22.4.3: sn(v + K) = cd v, cn(v + K) = -kc sd v, dn(v + K) = kc nd v,
-    and sn, cn change sign under v -> v + 2K.
+    and sn, cn change sign under v -> v + 2K. The reduction is exact for fewer
+    than 2**26 quarter periods; beyond, a ValueError names the argument
+    (``name``) rather than returning digits that are not there.
     """
     q, n, v = reduce(u, c, u_lo)
+    if np.any(np.abs(n) >= _MAX_QUARTERS):
+        raise ValueError(f"{name} is too large: the elliptic argument must stay below "
+                         "2**26 quarter periods (about 6.7e7 K1) for an exact reduction")
     s, cn_v, dn_v, ratio = core(v, c)
     odd = (q == 1.0) | (q == 3.0)
     sign = np.where(q >= 2.0, -1.0, 1.0)

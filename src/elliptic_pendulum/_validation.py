@@ -7,12 +7,18 @@ travels on as a silent NaN.
 
 from __future__ import annotations
 
+import math
 import numbers
 from typing import Any
 
 import numpy as np
 
+from . import _landen
+
 __all__ = ["real_array", "real_scalar", "modulus_pair", "positive_scalar", "scalar_or_array"]
+
+
+_BEYOND_DOUBLES = "must be finite (a number within the range of doubles)"
 
 
 def real_array(value: Any, name: str) -> np.ndarray:
@@ -27,12 +33,16 @@ def real_array(value: Any, name: str) -> np.ndarray:
                         f"got {type(value).__name__}")
     try:
         arr = np.asarray(value)
+    except OverflowError as exc:  # a Python int beyond the range of doubles
+        raise ValueError(f"{name} {_BEYOND_DOUBLES}") from exc
     except Exception as exc:  # ragged sequences and the like
         raise TypeError(f"{name} must be a real number or an array of real numbers") from exc
     if arr.dtype.kind == "O":
         # Decimal, Fraction, mpmath.mpf: accept what converts to float.
         try:
             arr = arr.astype(float)
+        except OverflowError as exc:
+            raise ValueError(f"{name} {_BEYOND_DOUBLES}") from exc
         except (TypeError, ValueError) as exc:
             raise TypeError(f"{name} must be a real number or an array of real numbers, "
                             f"got {type(value).__name__}") from exc
@@ -54,20 +64,21 @@ def real_scalar(value: Any, name: str) -> float:
     return float(array)
 
 
-def modulus_pair(k: Any, kc: Any = None) -> tuple[np.ndarray, np.ndarray]:
-    """Return (k, kc) as arrays, both checked to lie in [0, 1].
+def modulus_pair(k: Any, kc: Any = None) -> tuple[np.ndarray, np.ndarray, Any]:
+    """Return (k, kc, kc_lo) as arrays, k and kc checked to lie in [0, 1].
 
-    When ``kc`` is given it is trusted over ``k``: near the separatrix k
-    rounds to 1.0 while kc = sqrt(1 - k^2) still holds every digit, so only
-    kc drives the algorithms that are sensitive there.
+    When ``kc`` is given it is trusted over ``k``, and taken as exact (kc_lo = 0):
+    near the separatrix k rounds to 1.0 while kc = sqrt(1 - k^2) still holds
+    every digit, so only kc drives the algorithms that are sensitive there.
+    From ``k`` alone, kc is formed as a double-double (hi, lo).
     """
     if kc is None:
         k = real_array(k, "k")
         if np.any((k < 0) | (k > 1)):
             raise ValueError("k (the modulus) must lie in [0, 1]; "
                              "for k > 1 use the reciprocal modulus 1/k")
-        # (1-k)(1+k) rather than 1-k*k: exact when k is near 1.
-        return k, np.sqrt((1.0 - k) * (1.0 + k))
+        kc_hi, kc_lo = _landen.complement(k)
+        return k, kc_hi, kc_lo
     kc = real_array(kc, "kc")
     if np.any((kc < 0) | (kc > 1)):
         raise ValueError("kc (the complementary modulus sqrt(1 - k**2)) must lie in [0, 1]")
@@ -77,7 +88,7 @@ def modulus_pair(k: Any, kc: Any = None) -> tuple[np.ndarray, np.ndarray]:
         k = real_array(k, "k")
         if np.any((k < 0) | (k > 1)):
             raise ValueError("k (the modulus) must lie in [0, 1]")
-    return k, kc
+    return k, kc, 0.0
 
 
 def positive_scalar(value: Any, name: str) -> float:
@@ -85,7 +96,10 @@ def positive_scalar(value: Any, name: str) -> float:
     if not isinstance(value, numbers.Real) or isinstance(value, bool):
         if not (isinstance(value, np.ndarray) and value.ndim == 0):
             raise TypeError(f"{name} must be a real number, got {type(value).__name__}")
-    x = float(value)
+    try:
+        x = float(value)
+    except OverflowError:
+        x = math.inf
     if not np.isfinite(x) or x <= 0:
         raise ValueError(f"{name} must be a finite number > 0, got {x!r}")
     return x

@@ -91,8 +91,8 @@ def complete_integral(k: Any, kc: Any = None) -> Any:
     >>> abs(complete_integral(1.0, kc=1e-12) - math.log(4 / 1e-12)) < 1e-14
     True
     """
-    k, kc = modulus_pair(k, kc)
-    return scalar_or_array(_landen.quarter_period(kc), kc)
+    k, kc, kc_lo = modulus_pair(k, kc)
+    return scalar_or_array(_landen.quarter_period(kc, kc_lo), kc)
 
 
 def incomplete_integral(z: Any, k: Any, kc: Any = None) -> Any:
@@ -130,19 +130,22 @@ def incomplete_integral(z: Any, k: Any, kc: Any = None) -> Any:
     z = real_array(z, "z")
     if np.any(np.abs(z) > 1):
         raise ValueError("z must lie in [-1, 1]: E1(z, k) is the note's integral (17) up to z")
-    k, kc = modulus_pair(k, kc)
+    k, kc, kc_lo = modulus_pair(k, kc)
     # 1 - k^2 z^2 without cancellation at k ~ 1, z ~ 1.
     y = (1.0 - z) * (1.0 + z) + (kc * z) ** 2
     with np.errstate(divide="ignore", invalid="ignore"):
         out = z * special.elliprf((1.0 - z) * (1.0 + z), y, 1.0)
-    out = np.where(y == 0, np.copysign(np.inf, z), out)
+    # At z = +-1, E1 = +-K1 (18): from the AGM, which also holds where y underflows.
+    out = np.where(np.abs(z) == 1, z * _landen.quarter_period(kc, kc_lo), out)
     return scalar_or_array(out, z, kc)
 
 
-def _jacobi(u: np.ndarray, kc: np.ndarray, amplitude: bool = False):
-    """sn, cn, dn (and am if asked) for validated float arrays; kc in [0, 1]."""
-    c = _landen.constants(np.where(kc == 0, 1.0, kc))
-    sn_, cn_, dn_, am_ = _landen.evaluate(u, c, amplitude=amplitude)
+def _jacobi(u: np.ndarray, kc: np.ndarray, kc_lo: Any = 0.0, amplitude: bool = False):
+    """sn, cn, dn (and am if asked) for validated float arrays; kc (+ kc_lo) in [0, 1]."""
+    c = _landen.constants(np.where(kc == 0, 1.0, kc), kc_lo)
+    # The edges k = 0 and kc = 0 are overwritten below, for any u: keep them out of the reduction.
+    edge = (kc == 0) | (kc == 1)
+    sn_, cn_, dn_, am_ = _landen.evaluate(np.where(edge, 0.0, u), c, amplitude=amplitude)
     if np.any(kc == 0):
         # kc = 0 is the separatrix: sn = tanh, cn = dn = sech, am = gd.
         sech = _landen.sech(u)
@@ -195,8 +198,8 @@ def jacobi(u: Any, k: Any, kc: Any = None) -> tuple[Any, Any, Any]:
     True
     """
     u = real_array(u, "u")
-    k, kc = modulus_pair(k, kc)
-    s, c, d, _ = _jacobi(u, kc)
+    k, kc, kc_lo = modulus_pair(k, kc)
+    s, c, d, _ = _jacobi(u, kc, kc_lo)
     return (scalar_or_array(s, u, kc), scalar_or_array(c, u, kc),
             scalar_or_array(d, u, kc))
 
@@ -324,8 +327,8 @@ def am(u: Any, k: Any, kc: Any = None) -> Any:
     True
     """
     u = real_array(u, "u")
-    k, kc = modulus_pair(k, kc)
-    return scalar_or_array(_jacobi(u, kc, amplitude=True)[3], u, kc)
+    k, kc, kc_lo = modulus_pair(k, kc)
+    return scalar_or_array(_jacobi(u, kc, kc_lo, amplitude=True)[3], u, kc)
 
 
 def inverse_integral(u: Any, k: Any, kc: Any = None) -> Any:
@@ -356,9 +359,9 @@ def inverse_integral(u: Any, k: Any, kc: Any = None) -> Any:
     True
     """
     u = real_array(u, "u")
-    k, kc = modulus_pair(k, kc)
-    K = _landen.quarter_period(kc)
+    k, kc, kc_lo = modulus_pair(k, kc)
+    K = _landen.quarter_period(kc, kc_lo)
     if np.any(np.abs(u) > K):
         raise ValueError("u must lie in [-K1(k), K1(k)]: G is the inverse of E1 on that "
                          "interval only (use sn for the extension to all u)")
-    return scalar_or_array(_jacobi(u, kc)[0], u, kc)
+    return scalar_or_array(_jacobi(u, kc, kc_lo)[0], u, kc)

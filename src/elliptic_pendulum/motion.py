@@ -112,7 +112,8 @@ class Motion:
         # u = rate t + phase, with rate = w0 (II) or w0 / gamma = w0 k (IV) known to
         # 1e-32, carried as a double-double: the phase survives thousands of periods.
         with np.errstate(over="ignore"):  # an overflow here is exactly what is reported
-            in_range = np.all(np.abs(t) * st.rate <= 1e290)  # beyond, Dekker's split overflows
+            # Beyond 1e290, Dekker's split in the exact product overflows.
+            in_range = np.all((np.abs(t) <= 1e290) & (np.abs(t) * st.rate <= 1e290))
         if not in_range:
             raise ValueError("t is too large: |omega0 t| must stay below about 1e290 "
                              "(the elliptic argument grows like omega0 t)")
@@ -121,7 +122,7 @@ class Motion:
         u_lo = u_lo + (p_lo + st.rate_lo * t)
         c = _landen.constants(self.complementary_modulus, st.mod_c_lo)
         rotation = self.regime is Regime.ROTATION
-        sn, cn, dn, am = _landen.evaluate(u, c, u_lo, amplitude=rotation)
+        sn, cn, dn, am = _landen.evaluate(u, c, u_lo, amplitude=rotation, name="t")
         if rotation:  # (46): theta = +-2 am, theta' = +-2 (w0 / gamma) dn
             return st.turns + sgn * 2.0 * am, sgn * 2.0 * st.rate * dn
         # (25) as theta / 2 = atan2(alpha sn, dn): arcsin near 1 would halve the digits.
