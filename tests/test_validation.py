@@ -186,7 +186,8 @@ def test_python_ints_beyond_doubles_raise_valueerror(call):
 
 @pytest.mark.parametrize(("call", "name"), [
     (lambda: ep.sn(1e12, 0.5), "u"), (lambda: ep.jacobi(1e19, 1.0, kc=1e-300), "u"),
-    (lambda: ep.solve(1.0).theta(1e12), "t"), (lambda: ep.solve(0.5, 0.0, 1e-300).theta(6e300), "t")])
+    (lambda: ep.solve(1.0).theta(1e12), "t"),
+    (lambda: ep.solve(0.5, 0.0, 1e-300).theta(6e300), "t")])
 def test_arguments_past_exact_reduction_raise(call, name):
     # Beyond 2**26 quarter periods n K1 is no longer exact: an error, not digits that are not there.
     with pytest.raises(ValueError, match=f"^{name} is too large"):
