@@ -190,6 +190,9 @@ def jacobi(u: Any, k: Any, kc: Any = None) -> tuple[Any, Any, Any]:
     -----
     Against mpmath: sn and cn to about 1e-15 absolute and dn to a few
     1e-15 relative, for ``|u|`` up to 1e4 and every kc from 1 down to 0.
+    The reduction by quarter periods is exact up to 2**26 quarter periods
+    (about 6.7e7 K1); beyond, a ValueError names ``u`` (except at k = 0 and
+    kc = 0, which need no reduction).
 
     Examples
     --------

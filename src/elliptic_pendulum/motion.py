@@ -91,7 +91,11 @@ class Motion:
         return self.modulus if self.regime is Regime.ROTATION else None
 
     def theta(self, t: Any) -> Any:
-        """Return the angle theta(t) in radians; float or array like ``t``, any real t."""
+        """Return the angle theta(t) in radians; float or array like ``t``.
+
+        Any real t up to about 6.7e7 quarter periods (2**26) from 0; beyond, the
+        reduction of the elliptic argument is not exact and a ValueError names t.
+        """
         t = real_array(t, "t")
         return scalar_or_array(self._evaluate(t)[0], t)
 
