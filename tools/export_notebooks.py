@@ -3,7 +3,8 @@
 Jupyter renders neither MyST roles (``{eq}`...```) nor directives (``:::{prf:lemma}``), so
 a page converted as it is shows raw markup. This script reads each page that has a jupytext
 header, keeps the code cells as they are, and rewrites the Markdown cells to plain Markdown:
-proofs and admonitions become bold headings over block quotes, equation labels are dropped,
+proofs, admonitions and exercises (numbered per page) become bold headings over block quotes,
+solutions a bold heading over their text and cells, equation labels are dropped,
 references become text, and ``{glue:text}`` roles become the glued numbers when the notebook
 is executed here (``--execute``), or the glued name in code font otherwise.
 
@@ -78,6 +79,8 @@ DROPPED = {
     "glue:figure",
     "glue",
     "glue:any",
+    "solution-end",
+    "exercise-end",
 }
 CODE = {"code-block", "code", "sourcecode", "literalinclude"}
 
@@ -186,9 +189,12 @@ def _convert_directive(
         if inner:
             block += [f"*{' '.join(inner).strip()}*", ""]
         return block
+    if name == "solution-start":  # gated: the solution's text and cells follow, unquoted
+        return ["", "**Solution.**", ""]
     if name in BOXED or name.startswith("prf:"):
         kind = BOXED.get(name, name.split(":")[-1].capitalize())
-        title = convert_roles(arg, glue)
+        # A solution's argument is the label of its exercise, not a title.
+        title = "" if name == "solution" else convert_roles(arg, glue)
         heading = f"{kind} ({title})" if kind and title else (kind or title)
         if name == "prf:proof":
             heading = "Proof"
@@ -219,6 +225,18 @@ def export_page(page: Path, out_dir: Path, glue: GlueFn = default_glue) -> nbfor
             cell.pop("outputs", None)
             cell.pop("execution_count", None)
     nb.cells = [c for c in nb.cells if c.source.strip()]
+    # Number the exercises of this notebook "Exercise 1", "Exercise 2", ... (the HTML book
+    # numbers them through the whole book instead).
+    count = 0
+
+    def number(match: re.Match[str]) -> str:
+        nonlocal count
+        count += 1
+        return f"**Exercise {count}"
+
+    for cell in nb.cells:
+        if cell.cell_type == "markdown":
+            cell.source = re.sub(r"\*\*Exercise(?=[ .])", number, cell.source)
     origin = nbformat.v4.new_markdown_cell(
         f"*Classroom notebook generated from `book/{page.name}` by `tools/export_notebooks.py`; "
         "edit the book page, not this file.*"
