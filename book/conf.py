@@ -13,6 +13,7 @@ extensions = [
     "myst_nb",
     "sphinx_proof",
     "sphinx_exercise",
+    "sphinx_togglebutton",
     "sphinxcontrib.bibtex",
     "sphinx_book_theme",
 ]
