@@ -32,6 +32,12 @@ def speed_scale(m):
     return 2 * m.omega0 * k
 
 
+def difference_step(m):
+    """(rate, h): rate = max(w0, max|theta'|) sets the time scale, h = 1e-5 / rate the step."""
+    rate = max(m.omega0, speed_scale(m))
+    return rate, 1e-5 / rate
+
+
 def kc2(m):
     """1 - k^2, the distance from the separatrix in the energy (sign: + for II, - for IV)."""
     return 1 - (math.sin(m.theta0 / 2) ** 2 + (m.dtheta0 / (2 * m.omega0)) ** 2)
@@ -45,9 +51,7 @@ def test_equation_of_motion_3(theta0, dtheta0, omega0, t):
     # |theta''''| <= w0^2 (v^2 + w0^2) <= 2 rate^4 is < 1e-10 rate^2 / 3; rounding is
     # ulp(theta') / h, about 1e-16 v * rate / 1e-5 <= 1e-11 rate^2 (plus dtheta's own 1e-15).
     m = ep.solve(theta0, dtheta0, omega0)
-    v = speed_scale(m)
-    rate = max(omega0, v)
-    h = 1e-5 / rate
+    rate, h = difference_step(m)
     second = (m.dtheta(t + h) - m.dtheta(t - h)) / (2 * h)
     expected = -omega0**2 * math.sin(m.theta(t))
     assert abs(second - expected) <= 1e-8 * rate**2
@@ -59,9 +63,7 @@ def test_dtheta_is_the_derivative_of_theta(theta0, dtheta0, omega0, t):
     # dtheta = d theta / dt; central difference, same step and error budget as above, with
     # theta's rounding ulp(|theta|) / h for |theta| <= 10 + 20 v.
     m = ep.solve(theta0, dtheta0, omega0)
-    v = speed_scale(m)
-    rate = max(omega0, v)
-    h = 1e-5 / rate
+    rate, h = difference_step(m)
     first = (m.theta(t + h) - m.theta(t - h)) / (2 * h)
     size = abs(m.theta(t)) + 1.0
     assert abs(first - m.dtheta(t)) <= 1e-8 * rate + 4e-16 * size / h
