@@ -19,7 +19,7 @@ This module imports sympy only, nothing numeric from the package.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import sympy as sp
 
@@ -91,6 +91,12 @@ class Identity:
         Split radicals as if their factors were positive (true on the stated ``domain`` only).
     domain : str
         Where the statement is claimed.
+    mutant : sympy.Expr or None
+        A wrong right-hand side, the mistake a reader could make (a changed coefficient, sign,
+        exponent or argument); a check worth its name must reject it
+        (:func:`elliptic_pendulum.verify.identity` asserts that it does).
+    mutant_label : str
+        How the verdict names the mutant (Markdown); by default its LaTeX.
 
     Examples
     --------
@@ -106,6 +112,14 @@ class Identity:
     given: tuple = ()
     positive_radicands: bool = False
     domain: str = ""
+    mutant: sp.Expr | None = None
+    mutant_label: str = ""
+
+    def mutant_identity(self) -> Identity:
+        """Return the same statement with the mutant as its right-hand side."""
+        if self.mutant is None:
+            raise ValueError(f"{self.name} has no mutant")
+        return replace(self, name=self.name + "_mutant", rhs=self.mutant, mutant=None)
 
     def residual(self) -> sp.Expr:
         """Return lhs - rhs with derivatives and integrals done and the ``given`` substituted."""
