@@ -33,10 +33,12 @@ $(STAMP): pyproject.toml
 	$(PY) -m pip install --quiet -e ".[test,book,dev]"
 	touch $@
 
-book: $(STAMP)
+# The book links the library's names to the reference site, reading its objects.inv from
+# docs/_build/html (book/conf.py): the docs are built first.
+book: docs
 	$(SPHINX) -b html book book/_build/html
 
-book-strict: $(STAMP)
+book-strict: docs
 	$(SPHINX) -E -D nb_execution_mode=force -b html book book/_build/html
 
 docs: $(STAMP)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import importlib.util
+import os
 from pathlib import Path
 
 project = "The simple pendulum and elliptic functions"
@@ -14,6 +15,8 @@ extensions = [
     "sphinx_proof",
     "sphinx_exercise",
     "sphinx_togglebutton",
+    "sphinx_copybutton",
+    "sphinx.ext.intersphinx",
     "sphinxcontrib.bibtex",
     "sphinx_book_theme",
 ]
@@ -51,6 +54,48 @@ bibtex_reference_style = "author_year"
 numfig = True
 math_numfig = True
 math_eqref_format = "({number})"
+
+# --- Links into the reference site, offline ---------------------------------------------
+# {py:func}`ep.solve <elliptic_pendulum.motion.solve>` links to the API entry of the docs
+# build. Its objects.inv is read from disk, never fetched, and the links are written relative
+# to this build's output folder, so they work from file:// and need no server. The docs build
+# defaults to docs/_build/html (`make book` runs `make docs` first); the tests build it
+# elsewhere and say where with ELLIPTIC_PENDULUM_DOCS_HTML.
+_DOCS_HTML = Path(
+    os.environ.get("ELLIPTIC_PENDULUM_DOCS_HTML")
+    or Path(__file__).resolve().parents[1] / "docs" / "_build" / "html"
+).resolve()
+if not (_DOCS_HTML / "objects.inv").is_file():
+    raise RuntimeError(
+        f"The reference site's inventory {_DOCS_HTML / 'objects.inv'} is missing: the book "
+        "links to it. Build the docs first (`make docs`, which `make book` does), or set "
+        "ELLIPTIC_PENDULUM_DOCS_HTML to a docs build."
+    )
+intersphinx_mapping: dict[str, tuple[str, str]] = {}
+# Only Python objects resolve implicitly: a {ref} or {doc} of the book never lands in the docs
+# by accident (an explicit `api:` prefix still can).
+intersphinx_disabled_reftypes = ["std:*"]
+
+
+def _link_reference_site(app, config) -> None:
+    # The relative URI needs the output folder, which is known only once Sphinx runs.
+    relative = os.path.relpath(_DOCS_HTML, app.outdir).replace(os.sep, "/")
+    config.intersphinx_mapping["api"] = (relative + "/", str(_DOCS_HTML / "objects.inv"))
+
+
+def setup(app):
+    # Before intersphinx normalises the mapping (its own handler runs at priority 800).
+    app.connect("config-inited", _link_reference_site, priority=100)
+    return {"parallel_read_safe": True}
+
+
+# --- Copy buttons -----------------------------------------------------------------------
+# sphinx-copybutton ships its JavaScript and icons in the wheel (nothing from a CDN). Only
+# what follows a prompt is copied from a doctest, and cell outputs have no button.
+copybutton_prompt_text = r">>> |\.\.\. "
+copybutton_prompt_is_regexp = True
+copybutton_exclude = ".linenos, .gp, .go"
+copybutton_selector = "div:not(.output) > div.highlight pre"
 
 exclude_patterns = ["_build", "**.ipynb_checkpoints", "Thumbs.db", ".DS_Store", "jupyter_execute"]
 

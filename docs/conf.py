@@ -18,11 +18,18 @@ extensions = [
     # stricter numpydoc extension, whose section checks would duplicate ruff's D rules.
     "sphinx.ext.napoleon",
     "sphinx.ext.doctest",
+    # Copy buttons on code; its JavaScript and icons come from the wheel, not a CDN. Only
+    # what follows a >>> or ... prompt is copied from an example.
+    "sphinx_copybutton",
     "sphinx_book_theme",
 ]
 
 myst_enable_extensions = ["dollarmath", "amsmath", "colon_fence", "deflist"]
 myst_heading_anchors = 3
+
+copybutton_prompt_text = r">>> |\.\.\. "
+copybutton_prompt_is_regexp = True
+copybutton_exclude = ".linenos, .gp, .go"
 
 napoleon_google_docstring = False
 napoleon_numpy_docstring = True

@@ -56,3 +56,35 @@ def pages_with_math(html_dir: Path) -> list[Path]:
         for p in sorted(html_dir.rglob("*.html"))
         if "_static" not in p.parts and 'class="math' in p.read_text(encoding="utf-8")
     ]
+
+
+class _Links(HTMLParser):
+    def __init__(self) -> None:
+        super().__init__()
+        self.found: list[str] = []
+
+    def handle_starttag(self, tag: str, attrs: list[tuple[str, str | None]]) -> None:
+        self.found += [v for k, v in attrs if k in ("href", "src") and v is not None]
+
+
+def links(html_dir: Path) -> dict[str, list[str]]:
+    """Map each built page to the href and src values it contains (entities decoded)."""
+    result = {}
+    for page in sorted(html_dir.rglob("*.html")):
+        if "_static" in page.parts:
+            continue
+        parser = _Links()
+        parser.feed(page.read_text(encoding="utf-8"))
+        result[str(page.relative_to(html_dir))] = parser.found
+    return result
+
+
+def links_with_spaces(html_dir: Path) -> dict[str, list[str]]:
+    """The links that contain white space: a URL with a space is a broken URL (a `~` in
+    a .bib url field becomes a space unless escaped)."""
+    result = {}
+    for page, found in links(html_dir).items():
+        bad = [link for link in found if re.search(r"\s", link.strip())]
+        if bad:
+            result[page] = bad
+    return result

@@ -38,7 +38,9 @@ class Build:
         ]
 
 
-def sphinx_build(source: Path, outdir: Path, *extra: str) -> Build:
+def sphinx_build(
+    source: Path, outdir: Path, *extra: str, env: dict[str, str] | None = None
+) -> Build:
     """Run ``sphinx-build -n -W --keep-going -E`` (plus ``extra``) in a subprocess."""
     cmd = [
         sys.executable,
@@ -54,7 +56,7 @@ def sphinx_build(source: Path, outdir: Path, *extra: str) -> Build:
         str(source),
         str(outdir),
     ]
-    env = dict(os.environ, JUPYTER_PLATFORM_DIRS="1")
+    env = dict(os.environ, JUPYTER_PLATFORM_DIRS="1", **(env or {}))
     # The notebook kernel must find this interpreter's packages (the editable install).
     env["PATH"] = str(Path(sys.executable).parent) + os.pathsep + env.get("PATH", "")
     start = time.perf_counter()
@@ -76,10 +78,18 @@ def pytest_terminal_summary(terminalreporter: pytest.TerminalReporter) -> None:
 
 
 @pytest.fixture(scope="session")
-def book_build(tmp_path_factory: pytest.TempPathFactory) -> Build:
-    """The book built from clean with forced execution (what CI checks)."""
+def book_build(tmp_path_factory: pytest.TempPathFactory, docs_build: Build) -> Build:
+    """The book built from clean with forced execution (what CI checks).
+
+    It links to the API entries of this session's docs build (book/conf.py reads its
+    objects.inv from ELLIPTIC_PENDULUM_DOCS_HTML), so the docs are built once, first.
+    """
     return sphinx_build(
-        BOOK, tmp_path_factory.mktemp("book") / "html", "-D", "nb_execution_mode=force"
+        BOOK,
+        tmp_path_factory.mktemp("book") / "html",
+        "-D",
+        "nb_execution_mode=force",
+        env={"ELLIPTIC_PENDULUM_DOCS_HTML": str(docs_build.outdir)},
     )
 
 

@@ -2,8 +2,16 @@
 
 from __future__ import annotations
 
+import re
+
 import pytest
-from _buildcheck import external_resources, pages_with_math, toctree_entries
+from _buildcheck import (
+    external_resources,
+    links,
+    links_with_spaces,
+    pages_with_math,
+    toctree_entries,
+)
 from conftest import BOOK, Build
 
 pytestmark = pytest.mark.slow
@@ -33,3 +41,28 @@ def test_every_toctree_page_is_built(built_book) -> None:
     assert entries, "the book's index has no toctree"
     missing = [e for e in ["index", *entries] if not (built_book / f"{e}.html").is_file()]
     assert missing == []
+
+
+def test_no_link_contains_a_space(built_book) -> None:
+    assert links_with_spaces(built_book) == {}
+
+
+def test_library_names_link_to_the_reference_site(built_book, built_docs) -> None:
+    # book/conf.py maps the docs build's objects.inv (intersphinx, offline) with a URI
+    # relative to the book's output, so the links work from file:// and from a server.
+    into_docs = {}
+    for page, found in links(built_book).items():
+        for link in found:
+            if "/api.html#elliptic_pendulum." in link:
+                into_docs.setdefault(page, []).append(link)
+    assert into_docs, "no page of the book links a library name to the API reference"
+    broken = []
+    for page, found in into_docs.items():
+        for link in found:
+            path, anchor = link.split("#", 1)
+            target = ((built_book / page).parent / path).resolve()
+            if re.match(r"^([a-z]+:|/)", link) or target.parent != built_docs.resolve():
+                broken.append(f"{page}: {link} (not relative to the docs build)")
+            elif f'id="{anchor}"' not in target.read_text(encoding="utf-8"):
+                broken.append(f"{page}: {link} (no such entry)")
+    assert broken == []

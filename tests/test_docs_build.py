@@ -3,7 +3,12 @@
 from __future__ import annotations
 
 import pytest
-from _buildcheck import external_resources, pages_with_math, toctree_entries
+from _buildcheck import (
+    external_resources,
+    links_with_spaces,
+    pages_with_math,
+    toctree_entries,
+)
 from conftest import DOCS, Build
 
 pytestmark = pytest.mark.slow
@@ -33,3 +38,7 @@ def test_every_toctree_page_is_built(built_docs) -> None:
     assert entries, "the docs index has no toctree"
     missing = [e for e in ["index", *entries] if not (built_docs / f"{e}.html").is_file()]
     assert missing == []
+
+
+def test_no_link_contains_a_space(built_docs) -> None:
+    assert links_with_spaces(built_docs) == {}
