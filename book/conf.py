@@ -83,9 +83,42 @@ def _link_reference_site(app, config) -> None:
     config.intersphinx_mapping["api"] = (relative + "/", str(_DOCS_HTML / "objects.inv"))
 
 
+# --- The kernels that execute the pages --------------------------------------------------
+# An IPython profile of the book's own, written next to the doctrees and passed to the
+# kernels through IPYTHONDIR (they inherit this process's environment):
+# * figures as SVG, sharp on any screen (HiDPI) and zoomable; the library leaves rcParams alone;
+# * ipykernel 7 logs, once per page, that its local TCP sockets are unencrypted. The kernel
+#   lives as long as one page and talks only to this process on localhost; the message is
+#   dropped, by its exact text, and every other log line of the kernel still shows.
+# * no IPython history database for the throw-away kernels.
+_KERNEL_CONFIG = """\
+# Written by book/conf.py at every build; edits are lost.
+import logging
+
+
+class _DropUnencryptedTcpNotice(logging.Filter):
+    def filter(self, record):
+        return not str(record.msg).startswith("Kernel is running over TCP without encryption")
+
+
+logging.getLogger("IPKernelApp").addFilter(_DropUnencryptedTcpNotice())
+c.InlineBackend.figure_formats = {"svg"}
+c.HistoryManager.enabled = False
+"""
+
+
+def _kernel_profile(app) -> None:
+    ipython_dir = Path(app.doctreedir) / "ipython"
+    profile = ipython_dir / "profile_default"
+    profile.mkdir(parents=True, exist_ok=True)
+    (profile / "ipython_kernel_config.py").write_text(_KERNEL_CONFIG, encoding="utf-8")
+    os.environ["IPYTHONDIR"] = str(ipython_dir)
+
+
 def setup(app):
     # Before intersphinx normalises the mapping (its own handler runs at priority 800).
     app.connect("config-inited", _link_reference_site, priority=100)
+    app.connect("builder-inited", _kernel_profile)
     return {"parallel_read_safe": True}
 
 
