@@ -1,337 +1,249 @@
-"""Export the book's MyST pages as plain Jupyter notebooks for the classroom.
+"""Export the book's MyST pages as plain Jupyter notebooks, in a student and an instructor edition.
 
-Jupyter renders neither MyST roles (``{eq}`...```) nor directives (``:::{prf:lemma}``), so
-a page converted as it is shows raw markup. This script reads each page that has a jupytext
-header, keeps the code cells as they are, and rewrites the Markdown cells to plain Markdown:
-proofs, admonitions and exercises (numbered per page) become bold headings over block quotes,
-solutions a bold heading over their text and cells, equation labels are dropped,
-references become text, and ``{glue:text}`` roles become the glued numbers when the notebook
-is executed here (``--execute``), or the glued name in code font otherwise.
+``notebooks/student/NN-page.ipynb`` and ``notebooks/instructor/NN-page.ipynb``, NN the reading
+order of the book's toctree (00 is the first page, which lists the chapters). Markdown is plain
+(see classroom_markdown.py); exercises keep the book's numbers (classroom_labels.py). Student:
+each exercise is followed by an empty code cell and the solutions are left out. Instructor:
+each solution opens with a "Solution to Exercise N" heading, then its worked cells.
+
+The code needs only the package: ``from myst_nb import glue`` becomes a three-line stand-in
+that keeps the values in a dict. The glued numbers of the text come from one execution of the
+instructor edition (``--execute``; this also proves the cells run), or from the notebooks that
+a book build has just executed (``--glue-from book/_build/jupyter_execute``, used by the Sphinx
+extension book/_ext/classroom.py, whose HTML shows the same values). Values are formatted as
+myst-nb formats ``{glue:text}`name:fmt``` so integers stay integers.
 
 Usage::
 
-    python tools/export_notebooks.py book notebooks [--execute] [--timeout SECONDS]
+    python tools/export_notebooks.py book notebooks [--execute | --glue-from DIR]
 """
 
 from __future__ import annotations
 
 import argparse
-import os
+import json
 import re
 import sys
-from collections.abc import Callable, Iterable
+from ast import literal_eval
 from pathlib import Path
 
 import jupytext
 import nbformat
+from classroom_bib import label as bib_label
+from classroom_bib import load as load_bib
+from classroom_bib import reference_line
+from classroom_labels import Book, scan
+from classroom_markdown import SENTINEL, Context, convert_markdown
 
-GlueFn = Callable[[str, str], str]
+EDITIONS = ("student", "instructor")
+GLUE_IMPORT = re.compile(r"^\s*from\s+myst_nb\s+import\s+glue\s*$", re.MULTILINE)
+GLUE_STANDIN = """\
+# The book pastes these values into its text (myst_nb.glue); this notebook's text already
+# shows them, so here glue only keeps them in the dict `glued` (and shows one if asked).
+glued = {}
 
-DIRECTIVE_OPEN = re.compile(
-    r"^(?P<indent>\s*)(?P<fence>`{3,}|:{3,})\{(?P<name>[^}]+)\}\s*(?P<arg>.*)$"
+
+def glue(name, value, display=True):
+    glued[name] = value
+    if display:
+        IPython.display.display(value)
+"""
+GLUE_HARVEST = (
+    "import json as _json\n"
+    "_fmt = get_ipython().display_formatter.format\n"
+    "print('GLUED' + _json.dumps({k: _fmt(v)[0].get('text/plain', '') "
+    "for k, v in globals().get('glued', {}).items()}))"
 )
-OPTION = re.compile(r"^\s*:(?P<key>[\w-]+):\s*(?P<value>.*)$")
-ROLE = re.compile(r"\{(?P<role>[\w:+-]+)\}`(?P<content>[^`]*)`")
-TARGET = re.compile(r"^\s*\([\w:.-]+\)=\s*$")
-DMATH_LABEL = re.compile(r"^(?P<close>.*\$\$)\s*\([\w:.-]+\)\s*$")
-TEXT_AND_TARGET = re.compile(r"^(?P<text>.*?)\s*<(?P<target>[^<>]+)>$", re.DOTALL)
-
-# Directive names shown as a bold heading over a block quote, and the heading they get.
-BOXED = {
-    "prf:theorem": "Theorem",
-    "prf:proposition": "Proposition",
-    "prf:lemma": "Lemma",
-    "prf:corollary": "Corollary",
-    "prf:definition": "Definition",
-    "prf:remark": "Remark",
-    "prf:example": "Example",
-    "prf:property": "Property",
-    "prf:observation": "Observation",
-    "prf:conjecture": "Conjecture",
-    "prf:assumption": "Assumption",
-    "prf:axiom": "Axiom",
-    "prf:criterion": "Criterion",
-    "prf:algorithm": "Algorithm",
-    "prf:proof": "Proof",
-    "exercise": "Exercise",
-    "solution": "Solution",
-    "note": "Note",
-    "warning": "Warning",
-    "tip": "Tip",
-    "important": "Important",
-    "hint": "Hint",
-    "caution": "Caution",
-    "attention": "Attention",
-    "danger": "Danger",
-    "error": "Error",
-    "seealso": "See also",
-    "admonition": "",
-    "dropdown": "",
-    "epigraph": "",
+BOOK_ONLY = re.compile(r"^\s*(import|from)\s+(myst_nb|sphinx\w*|docutils)\b", re.MULTILINE)
+# The book's folding tags, as Jupyter's own collapsed metadata.
+HIDDEN = {
+    "hide-input": ("source_hidden",), "remove-input": ("source_hidden",),
+    "hide-output": ("outputs_hidden",), "remove-output": ("outputs_hidden",),
+    "hide-cell": ("source_hidden", "outputs_hidden"),
+    "remove-cell": ("source_hidden", "outputs_hidden"),
 }
-# Directives with nothing to show in a notebook (navigation, bibliography, glued figures
-# whose picture the code cell above already draws).
-DROPPED = {
-    "toctree",
-    "bibliography",
-    "contents",
-    "tableofcontents",
-    "glue:figure",
-    "glue",
-    "glue:any",
-    "solution-end",
-    "exercise-end",
-}
-CODE = {"code-block", "code", "sourcecode", "literalinclude"}
 
 
-def default_glue(name: str, fmt: str) -> str:
-    """Show a glued value that is not known yet as its name in code font."""
-    return f"`{name}`"
+def format_glue(text: str, fmt: str) -> str:
+    """myst-nb's format_plain_text: the text/plain of the value, formatted by the role's spec."""
+    try:
+        value: object = literal_eval(text)
+    except (SyntaxError, ValueError):
+        value = text
+    if fmt == "":
+        return str(value)
+    kind = fmt[-1]
+    if kind == "s":
+        value = str(value)
+    elif kind in "bcdoxX":
+        value = int(value)  # type: ignore[call-overload]
+    elif kind in "eEfFgGn%":
+        value = float(value)  # type: ignore[arg-type]
+    return format(value, fmt)
 
 
-def convert_roles(text: str, glue: GlueFn) -> str:
-    """Rewrite the MyST roles of one Markdown text to plain Markdown."""
-
-    def replace(match: re.Match[str]) -> str:
-        role, content = match["role"], match["content"]
-        if role == "math":
-            return f"${content}$"
-        if role.startswith("glue"):
-            name, _, fmt = content.partition(":")
-            return glue(name.strip(), fmt.strip())
-        if role == "eq":
-            label = content.strip()
-            return "(" + re.sub(r"^eq[-:]?", "", label) + ")"
-        if role.startswith("cite"):
-            return "[" + ", ".join(k.strip() for k in content.split(",")) + "]"
-        m = TEXT_AND_TARGET.match(content)
-        if m:  # {ref}`the text <label>` keeps the text
-            return m["text"].strip()
-        if role in {"ref", "numref", "prf:ref", "doc", "term", "any"}:
-            return "*" + content.strip().replace("-", " ") + "*"
-        return content
-
-    return ROLE.sub(replace, text)
+def _code_cell(cell: nbformat.NotebookNode, first_glue: list[bool]) -> None:
+    source = cell.source
+    if GLUE_IMPORT.search(source):
+        source = GLUE_IMPORT.sub("", source).rstrip() + "\n"
+        if first_glue[0]:  # one stand-in per notebook, or the dict would start again
+            source = "import IPython.display\n" + source + "\n\n" + GLUE_STANDIN
+            first_glue[0] = False
+        cell.source = re.sub(r"\n{4,}", "\n\n\n", source).strip("\n")
+    if BOOK_ONLY.search(cell.source):
+        raise ValueError(f"a code cell needs myst_nb or Sphinx: {cell.source[:200]!r}")
+    hidden = {k for tag in cell.metadata.get("tags", []) for k in HIDDEN.get(tag, ())}
+    if hidden:
+        cell.metadata.setdefault("jupyter", {}).update({k: True for k in sorted(hidden)})
+    cell.outputs, cell.execution_count = [], None
 
 
-def _quote(lines: list[str]) -> list[str]:
-    return [("> " + line).rstrip() for line in lines]
-
-
-def convert_markdown(
-    text: str,
-    glue: GlueFn = default_glue,
-    source_dir: Path | None = None,
-    out_dir: Path | None = None,
-) -> str:
-    """Rewrite a MyST Markdown cell to Markdown that plain Jupyter renders."""
-    lines = text.splitlines()
-    out: list[str] = []
-    i = 0
-    while i < len(lines):
-        line = lines[i]
-        opened = DIRECTIVE_OPEN.match(line)
-        if opened:
-            fence = opened["fence"]
-            name = opened["name"].strip()
-            arg = opened["arg"].strip()
-            body: list[str] = []
-            i += 1
-            depth_fence = re.compile(
-                r"^\s*" + re.escape(fence[0]) + "{" + str(len(fence)) + r",}\s*$"
-            )
-            while i < len(lines) and not depth_fence.match(lines[i]):
-                body.append(lines[i])
-                i += 1
-            i += 1  # the closing fence
-            out.extend(_convert_directive(name, arg, body, glue, source_dir, out_dir))
-            continue
-        if TARGET.match(line) or line.lstrip().startswith("% "):
-            i += 1
-            continue
-        labelled = DMATH_LABEL.match(line)
-        if labelled:
-            line = labelled["close"]
-        out.append(line)
-        i += 1
-    text = convert_roles("\n".join(out), glue)
-    return re.sub(r"\n{3,}", "\n\n", text).strip("\n")
-
-
-def _convert_directive(
-    name: str,
-    arg: str,
-    body: list[str],
-    glue: GlueFn,
-    source_dir: Path | None,
-    out_dir: Path | None,
-) -> list[str]:
-    options: dict[str, str] = {}
-    while body and OPTION.match(body[0]):
-        m = OPTION.match(body[0])
-        assert m is not None
-        options[m["key"]] = m["value"]
-        body = body[1:]
-    inner = convert_markdown("\n".join(body), glue, source_dir, out_dir).splitlines()
-    if name in DROPPED:
+def _caption_cell(cell: nbformat.NotebookNode, book: Book, ctx: Context) -> list[str]:
+    figure = cell.metadata.get("mystnb", {}).get("figure", {})
+    if not figure.get("caption"):
         return []
-    if name in CODE:
-        return ["```" + (arg or "python"), *body, "```", ""]
-    if name == "math":
-        return ["$$", *body, "$$", ""]
-    if name in {"figure", "image"}:
-        path = arg
-        if source_dir is not None and out_dir is not None and not re.match(r"^\w+://", path):
-            path = os.path.relpath(source_dir / path, out_dir).replace(os.sep, "/")
-        alt = options.get("alt", "figure")
-        block = ["", f"![{alt}]({path})", ""]
-        if inner:
-            block += [f"*{' '.join(inner).strip()}*", ""]
-        return block
-    if name == "solution-start":  # gated: the solution's text and cells follow, unquoted
-        return ["", "**Solution.**", ""]
-    if name in BOXED or name.startswith("prf:"):
-        kind = BOXED.get(name, name.split(":")[-1].capitalize())
-        # A solution's argument is the label of its exercise, not a title.
-        title = "" if name == "solution" else convert_roles(arg, glue)
-        heading = f"{kind} ({title})" if kind and title else (kind or title)
-        if name == "prf:proof":
-            heading = "Proof"
-        head = [f"> **{heading}.**", ">"] if heading else []
-        return ["", *head, *_quote(inner), ""]
-    return ["", *inner, ""]
+    name = figure.get("name", "")
+    number = book.targets[name].number if name in book.targets else ""
+    caption = convert_markdown(str(figure["caption"]).strip(), ctx)
+    anchor = f'<a id="{name}"></a>\n\n' if name else ""
+    return [f"{anchor}**Fig. {number}.** {caption}" if number else anchor + caption]
 
 
-def _is_myst_notebook(path: Path) -> bool:
-    head = path.read_text(encoding="utf-8")[:400]
-    return head.startswith("---") and "jupytext:" in head
+def export_page(
+    book_dir: Path, book: Book, page: str, edition: str, glue: dict[str, str] | None
+) -> nbformat.NotebookNode:
+    """One page as a plain notebook of one edition. glue=None leaves `name` placeholders."""
+    if edition not in EDITIONS:
+        raise ValueError(f"edition must be one of {EDITIONS}, not {edition!r}")
+    bib = load_bib(book_dir / "references.bib")
+    cited: list[str] = []
 
+    def glued(key: str, fmt: str) -> str:
+        if glue is None:
+            return f"`{key}`"
+        if key not in glue:
+            raise ValueError(f"page {page!r} pastes {key!r}, which no cell glues")
+        return format_glue(glue[key], fmt)
 
-def book_pages(book_dir: Path) -> list[Path]:
-    """Return the book pages that are notebooks (MyST Markdown with a jupytext header)."""
-    return sorted(p for p in book_dir.glob("*.md") if _is_myst_notebook(p))
+    def cite(role: str, keys: list[str]) -> str:
+        links = []
+        for key in keys:
+            if key not in bib:
+                raise ValueError(f"page {page!r} cites {key!r}, which is not in references.bib")
+            cited.append(key)
+            who, year = bib_label(bib[key])
+            text = f"{who} [{year}]" if role in {"cite:t", "cite:ts"} else f"{who}, {year}"
+            links.append(f"[{text}](#ref-{key})")
+        joined = "; ".join(links)
+        return joined if role in {"cite:t", "cite:ts"} else f"\\[{joined}\\]"
 
-
-def export_page(page: Path, out_dir: Path, glue: GlueFn = default_glue) -> nbformat.NotebookNode:
-    """Read one MyST page with jupytext and return it as a plain-Markdown notebook."""
-    nb = jupytext.read(page, fmt="md:myst")
+    ctx = Context(page, book.files, book.titles, book.targets, glued, cite,
+                  book.exercise_numbers, book.pages[1:])
+    nb = jupytext.read(book_dir / f"{page}.md", fmt="md:myst")
+    cells: list[nbformat.NotebookNode] = []
+    in_solution, first_glue = False, [True]
     for cell in nb.cells:
-        if cell.cell_type == "markdown":
-            cell.source = convert_markdown(cell.source, glue, page.parent, out_dir)
-        elif cell.cell_type == "raw":
-            cell.cell_type = "markdown"
-            cell.source = convert_markdown(cell.source, glue, page.parent, out_dir)
-            cell.pop("outputs", None)
-            cell.pop("execution_count", None)
-    nb.cells = [c for c in nb.cells if c.source.strip()]
-    # Number the exercises of this notebook "Exercise 1", "Exercise 2", ... (the HTML book
-    # numbers them through the whole book instead).
-    count = 0
-
-    def number(match: re.Match[str]) -> str:
-        nonlocal count
-        count += 1
-        return f"**Exercise {count}"
-
-    for cell in nb.cells:
-        if cell.cell_type == "markdown":
-            cell.source = re.sub(r"\*\*Exercise(?=[ .])", number, cell.source)
-    origin = nbformat.v4.new_markdown_cell(
-        f"*Classroom notebook generated from `book/{page.name}` by `tools/export_notebooks.py`; "
-        "edit the book page, not this file.*"
-    )
-    nb.cells.insert(0, origin)
-    nb.metadata.pop("jupytext", None)
-    nb.metadata["kernelspec"] = {
-        "name": "python3",
-        "display_name": "Python 3",
-        "language": "python",
-    }
-    return nb
-
-
-def glued_values(nb: nbformat.NotebookNode) -> dict[str, object]:
-    """Collect the values that ``myst_nb.glue`` recorded in the outputs of an executed notebook."""
-    values: dict[str, object] = {}
-    for cell in nb.cells:
-        for output in cell.get("outputs", []):
-            scrapbook = output.get("metadata", {}).get("scrapbook", {})
-            name = scrapbook.get("name")
-            if name is None:
-                continue
-            # display=False glues under a prefixed mime type that Jupyter does not show.
-            text = output.get("data", {}).get(scrapbook.get("mime_prefix", "") + "text/plain")
-            if text is None:
-                continue
-            try:
-                values[name] = float(text)
-            except ValueError:
-                values[name] = text.strip("'\"")
-    return values
+        if cell.cell_type == "code":
+            if not in_solution or edition == "instructor":
+                _code_cell(cell, first_glue)
+                cells.append(cell)
+                captions = _caption_cell(cell, book, ctx)
+                cells.extend(nbformat.v4.new_markdown_cell(t) for t in captions)
+            continue
+        text = convert_markdown(cell.source, ctx)
+        for piece in re.split(f"^{SENTINEL}(\\w[\\w-]*){SENTINEL}$", text, flags=re.MULTILINE):
+            if piece == "ANSWER":
+                if edition == "student":
+                    cells.append(nbformat.v4.new_code_cell(""))
+            elif piece == "SOLUTION-START":
+                in_solution = True
+            elif piece == "SOLUTION-END":
+                in_solution = False
+            elif piece.strip() and (not in_solution or edition == "instructor"):
+                cells.append(nbformat.v4.new_markdown_cell(piece.strip("\n")))
+    if in_solution:
+        raise ValueError(f"page {page!r}: a solution-start has no solution-end")
+    if cited:
+        keys = list(dict.fromkeys(cited))
+        cells.append(nbformat.v4.new_markdown_cell(
+            "## References\n\n" + "\n".join(reference_line(k, bib[k]) for k in keys)))
+    note = (f"*Classroom notebook ({edition} edition) generated from `book/{page}.md` by "
+            "`tools/export_notebooks.py`: edit the book page, not this file.*")
+    out = nbformat.v4.new_notebook()
+    out.cells = [nbformat.v4.new_markdown_cell(note), *cells]
+    out.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",
+                                  "language": "python"}
+    out.metadata["language_info"] = {"name": "python"}
+    for i, c in enumerate(out.cells):  # stable ids: a re-export changes no unchanged cell
+        c["id"] = f"cell-{i}"
+    return out
 
 
-def execute(nb: nbformat.NotebookNode, cwd: Path, timeout: int = 600) -> nbformat.NotebookNode:
-    """Run a notebook top to bottom in a fresh ``python3`` kernel; raise on the first error."""
+def execute(nb: nbformat.NotebookNode, cwd: Path, kernel: str = "python3",
+            timeout: int = 600) -> nbformat.NotebookNode:
+    """Run a notebook top to bottom in a fresh kernel; raise on the first error."""
     from nbclient import NotebookClient
 
-    client = NotebookClient(
-        nb, timeout=timeout, kernel_name="python3", resources={"metadata": {"path": str(cwd)}}
-    )
-    client.execute()
+    NotebookClient(nb, timeout=timeout, kernel_name=kernel,
+                   resources={"metadata": {"path": str(cwd)}}).execute()
     return nb
 
 
-def fill_glue(nb: nbformat.NotebookNode, page: Path, out_dir: Path) -> nbformat.NotebookNode:
-    """Rewrite the Markdown cells again, now with the glued values of the executed notebook."""
-    values = glued_values(nb)
-
-    def glue(name: str, fmt: str) -> str:
-        if name not in values:
-            return f"`{name}`"
-        value = values[name]
-        return format(value, fmt) if fmt and isinstance(value, float) else str(value)
-
-    fresh = export_page(page, out_dir, glue)
-    markdown = iter(c for c in fresh.cells if c.cell_type == "markdown")
-    for cell in nb.cells:
-        if cell.cell_type == "markdown":
-            cell.source = next(markdown).source
-    return nb
+def harvest(nb: nbformat.NotebookNode, cwd: Path, kernel: str = "python3",
+            timeout: int = 600) -> dict[str, str]:
+    """Execute a notebook plus one cell that prints what `glue` kept: {name: text/plain}."""
+    nb.cells.append(nbformat.v4.new_code_cell(GLUE_HARVEST, id="harvest"))
+    execute(nb, cwd, kernel, timeout)
+    cell = nb.cells.pop()
+    text = "".join(o.get("text", "") for o in cell.outputs if o.output_type == "stream")
+    return dict(json.loads(text.split("GLUED", 1)[1]))
 
 
-def export(
-    book_dir: Path,
-    out_dir: Path,
-    run: bool = False,
-    timeout: int = 600,
-    pages: Iterable[Path] | None = None,
-) -> list[Path]:
-    """Export (and optionally execute) every notebook page of the book; return the files."""
-    out_dir.mkdir(parents=True, exist_ok=True)
+def glue_from_build(folder: Path, page: str) -> dict[str, str]:
+    """The values myst-nb glued while building the book (``<page>.glue.json``)."""
+    path = folder / f"{page}.glue.json"
+    if not path.exists():
+        return {}
+    data = json.loads(path.read_text(encoding="utf-8"))
+    return {k: v.get("data", {}).get("text/plain", "") for k, v in data.items()}
+
+
+def export(book_dir: Path, out_dir: Path, *, run: bool = False, glue_from: Path | None = None,
+           editions: tuple[str, ...] = EDITIONS, kernel: str = "python3",
+           timeout: int = 600, pages: list[str] | None = None) -> list[Path]:
+    """Write out_dir/<edition>/NN-page.ipynb for every notebook page; return the files."""
+    book = scan(book_dir)
     written = []
-    for page in pages if pages is not None else book_pages(book_dir):
-        nb = export_page(page, out_dir)
-        if run:
-            execute(nb, out_dir, timeout)
-            fill_glue(nb, page, out_dir)
-        target = out_dir / (page.stem + ".ipynb")
-        nbformat.write(nb, target)
-        written.append(target)
+    for page in pages if pages is not None else book.pages:
+        glue: dict[str, str] | None = None
+        if glue_from is not None:
+            glue = glue_from_build(glue_from, page)
+        elif run:  # in the folder the notebook will live in, as a student runs it
+            (out_dir / "instructor").mkdir(parents=True, exist_ok=True)
+            glue = harvest(export_page(book_dir, book, page, "instructor", None),
+                           out_dir / "instructor", kernel, timeout)
+        for edition in editions:
+            nb = export_page(book_dir, book, page, edition, glue)
+            target = out_dir / edition / book.files[page]
+            target.parent.mkdir(parents=True, exist_ok=True)
+            nbformat.write(nb, target)
+            written.append(target)
     return written
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = argparse.ArgumentParser(description=(__doc__ or "").splitlines()[0])
     parser.add_argument("book", type=Path, help="folder of the MyST pages (book/)")
-    parser.add_argument("out", type=Path, help="folder for the .ipynb files (notebooks/)")
-    parser.add_argument(
-        "--execute", action="store_true", help="run each notebook in a fresh kernel"
-    )
+    parser.add_argument("out", type=Path, help="folder for the editions (notebooks/)")
+    how = parser.add_mutually_exclusive_group()
+    how.add_argument("--execute", action="store_true",
+                     help="run each instructor notebook once to fill in the glued values")
+    how.add_argument("--glue-from", type=Path, help="a build's jupyter_execute folder")
     parser.add_argument("--timeout", type=int, default=600, help="seconds per cell")
     args = parser.parse_args(argv)
-    for path in export(args.book, args.out, run=args.execute, timeout=args.timeout):
-        print(f"wrote {path}" + (" (executed)" if args.execute else ""))
+    for path in export(args.book, args.out, run=args.execute, glue_from=args.glue_from,
+                       timeout=args.timeout):
+        print(f"wrote {path}")
     return 0
 
 
