@@ -30,6 +30,38 @@ def test_identity_checks_true(stmt):
     assert stmt.check(), f"{stmt.equation}: {stmt.latex()}"
 
 
+@pytest.mark.parametrize("stmt", IDENTITIES, ids=[e.name for e in IDENTITIES])
+def test_every_identity_rejects_its_mutant(stmt):
+    # issue 7: a check worth its name fails on the slip a reader could make.
+    assert stmt.mutant is not None, f"{stmt.name} has no mutant"
+    assert stmt.check(), stmt.name
+    assert not stmt.mutant_identity().check(), f"{stmt.name}: the mutant passes too"
+
+
+@pytest.mark.parametrize("name,mutant", [("eq26", 8 * symbolic.K1 / symbolic.omega0),
+                                         ("eq8", 4 * sp.pi / symbolic.omega0)])
+def test_the_doubled_periods_are_rejected(name, mutant):
+    # issue 7 item 5: (26) with 8 K1 and (8) with 4 pi / omega_0 must fail, whatever mutant
+    # the identity happens to carry (both doubled periods are periods of the motion too).
+    stmt = identity(name)
+    assert stmt.check()
+    assert not dataclasses.replace(stmt, rhs=mutant).check()
+
+
+@pytest.mark.parametrize("stmt", IDENTITIES, ids=[e.name for e in IDENTITIES])
+def test_no_display_reads_x_equals_x(stmt):
+    # issue 7 item 6: the displayed left side must show the step, not sympy's evaluation of it.
+    left, right = (sp.latex(side) for side in (stmt.lhs, stmt.rhs))
+    assert left != right, f"{stmt.name}: {left} = {right}"
+
+
+def test_the_misprinted_expression_is_displayed():
+    # The correct G_uu(K1 - 0) shows -(1 + alpha^2) + 2 alpha^2 itself, the expression the note
+    # prints as -(1 + alpha)^2 + 2 alpha^2; sympy would otherwise collapse it to alpha^2 - 1.
+    left = sp.latex(identity("eq23_at_K1").lhs)
+    assert r"\left(\alpha^{2} + 1\right)" in left and "2 \\alpha^{2}" in left
+
+
 @pytest.mark.parametrize("err", PRINTED, ids=[e.printed.name for e in PRINTED])
 def test_printed_erratum_fails_and_its_correction_holds(err):
     assert not err.printed.check(), err.location
@@ -78,16 +110,18 @@ def test_a_wrong_statement_fails():
     assert not wrong.check()
 
 
-def test_symbolic_imports_sympy_only():
-    # DESIGN.md: symbolic imports sympy and nothing numeric from the package.
-    tree = ast.parse(pathlib.Path(symbolic.__file__).read_text())
+@pytest.mark.parametrize("module", ["symbolic", "_identities", "errata"])
+def test_symbolic_imports_sympy_only(module):
+    # DESIGN.md: symbolic imports sympy and nothing numeric from the package; its statements
+    # (_identities) and the errata import sympy and each other only.
+    path = pathlib.Path(symbolic.__file__).with_name(f"{module}.py")
     modules = set()
-    for node in ast.walk(tree):
+    for node in ast.walk(ast.parse(path.read_text())):
         if isinstance(node, ast.Import):
             modules |= {a.name.split(".")[0] for a in node.names}
         elif isinstance(node, ast.ImportFrom):
             modules.add((node.module or ".").split(".")[0])
-    assert modules <= {"__future__", "dataclasses", "sympy"}, modules
+    assert modules <= {"__future__", "dataclasses", "sympy", "symbolic", "_identities"}, modules
 
 
 # Numerical check, independent of simplify and of the radical splitting.
@@ -110,6 +144,8 @@ def _sample_float(sym, rng):
         return rng.uniform(-0.9, 0.9)  # inside (-1, 1)
     if name in {r"\ell", "m", "g", "omega_0", "omega", "w_0", "K_1"}:
         return rng.uniform(0.5, 3.0)
+    if sym.is_positive:
+        return rng.uniform(0.1, 3.0)
     return rng.uniform(-2.0, 2.0)
 
 
@@ -134,6 +170,14 @@ def test_identity_holds_numerically_at_random_points(stmt):
     rng = np.random.default_rng(sum(map(ord, stmt.name)))
     for _ in range(3):
         assert _numeric_residual(stmt, rng) < 1e-20, stmt.name
+
+
+@pytest.mark.parametrize("stmt", IDENTITIES, ids=[e.name for e in IDENTITIES])
+def test_mutant_fails_numerically_at_random_points(stmt):
+    # The mutant is wrong by arithmetic too, not just beyond what simplify can prove.
+    rng = np.random.default_rng(sum(map(ord, stmt.name)))
+    for _ in range(3):
+        assert _numeric_residual(stmt.mutant_identity(), rng) > 1e-6, stmt.name
 
 
 @pytest.mark.parametrize("err", PRINTED, ids=[e.printed.name for e in PRINTED])
