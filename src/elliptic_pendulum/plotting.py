@@ -1,12 +1,15 @@
 r"""Figures for the book, the README and the classroom, drawn from the library.
 
 Every helper takes an optional matplotlib ``ax`` (or ``axes``), draws on it and
-returns it; none calls ``plt.show()`` or changes rcParams. matplotlib is
+returns it; none calls ``plt.show()`` or changes rcParams. Text is sized from the
+figure's width, so it stays readable when the figure is scaled to a page. matplotlib is
 imported inside the functions, so importing :mod:`elliptic_pendulum` does not
 select a backend.
 
 Figures of the note: the pendulum (Fig. 1, :func:`pendulum_sketch`) and the
-phase portrait of (9) (Fig. 2, :func:`phase_portrait`).
+phase portrait of (9) (Fig. 2, :func:`phase_portrait`). Figures a teacher asks for beyond
+the note (:func:`period_ratio_plot`, :func:`tension_plot`, :func:`extension_plot`) live in
+``elliptic_pendulum.plotting_extra`` and are importable from here.
 """
 
 from __future__ import annotations
@@ -17,19 +20,24 @@ from typing import Any
 
 import numpy as np
 
-from .elliptic import am, complete_integral, incomplete_integral, inverse_integral, jacobi
+from ._plotbase import new_axes, readable, text_size
 from .motion import Motion, solve
 from .numerics import integrate
+from .plotting_extra import (
+    extension_plot,
+    period_ratio_plot,
+    plot_amplitude,
+    plot_integral,
+    plot_inverse,
+    plot_jacobi,
+    tension_plot,
+)
 
 __all__ = ["pendulum_sketch", "phase_portrait", "plot_motion", "plot_jacobi",
-           "plot_integral", "plot_inverse", "plot_amplitude"]
+           "plot_integral", "plot_inverse", "plot_amplitude",
+           "period_ratio_plot", "tension_plot", "extension_plot"]
 
-
-def _axes(ax: Any = None) -> Any:
-    if ax is None:
-        import matplotlib.pyplot as plt
-        _, ax = plt.subplots(figsize=(6, 4), layout="constrained")
-    return ax
+_axes = new_axes
 
 
 def pendulum_sketch(theta: float = 0.55, ax: Any = None) -> Any:
@@ -54,22 +62,23 @@ def pendulum_sketch(theta: float = 0.55, ax: Any = None) -> Any:
     ax.plot([x], [y], marker="o", color="C0", ms=18)
     arc = np.linspace(0, theta, 40)
     ax.plot(0.3 * np.sin(arc), -0.3 * np.cos(arc), color="C3")
+    big = text_size(ax, 1.3)
     ax.annotate(r"$\theta$", (0.32 * math.sin(theta / 2), -0.36 * math.cos(theta / 2)),
-                color="C3", fontsize=13)
+                color="C3", fontsize=big)
     ax.annotate("", xy=(0.62 * x, 0.62 * y), xytext=(x, y),
                 arrowprops=dict(arrowstyle="->", color="C2", lw=2))
-    ax.annotate(r"$\mathbf{T}$", (0.7 * x + 0.05, 0.7 * y), color="C2", fontsize=13)
+    ax.annotate(r"$\mathbf{T}$", (0.7 * x + 0.05, 0.7 * y), color="C2", fontsize=big)
     ax.annotate("", xy=(x, y - 0.4), xytext=(x, y),
                 arrowprops=dict(arrowstyle="->", color="C1", lw=2))
-    ax.annotate(r"$mg$", (x + 0.05, y - 0.35), color="C1", fontsize=13)
-    ax.annotate(r"$\ell$", (0.5 * x - 0.1, 0.5 * y), fontsize=13)
-    ax.annotate(r"$(x, y)$", (x + 0.1, y + 0.05), fontsize=12)
+    ax.annotate(r"$mg$", (x + 0.05, y - 0.35), color="C1", fontsize=big)
+    ax.annotate(r"$\ell$", (0.5 * x - 0.1, 0.5 * y), fontsize=big)
+    ax.annotate(r"$(x, y)$", (x + 0.1, y + 0.05), fontsize=text_size(ax, 1.1))
     ax.set_xlim(-0.8, 1.2)
     ax.set_ylim(-1.6, 0.3)
     ax.set_aspect("equal")
     ax.set_xlabel("$x$")
     ax.set_ylabel("$y$")
-    return ax
+    return readable(ax)
 
 
 def _orbit(motion: Motion, n: int = 600) -> tuple[np.ndarray, np.ndarray]:
@@ -83,22 +92,87 @@ def _c1_text(value: float) -> str:
     return f"{round(value, 2) + 0.0:.2f}"
 
 
-def _inline(color: str) -> dict:
+def _inline(ax: Any, color: str) -> dict:
     """Keyword arguments of an inline curve label: centred on the curve, on a white patch."""
-    return dict(fontsize=7, color=color, ha="center", va="center",
+    return dict(fontsize=text_size(ax, 0.8), color=color, ha="center", va="center",
                 bbox=dict(boxstyle="round,pad=0.1", fc="white", ec="none", alpha=0.9))
+
+
+def _arrowhead(ax: Any, th: np.ndarray, dth: np.ndarray, i: int, color: str) -> None:
+    """Draw an arrowhead on the curve at sample i, pointing to sample i + 1.
+
+    The samples are in time order, so the head shows the direction of the motion itself.
+    """
+    ax.annotate("", xy=(th[i + 1], dth[i + 1]), xytext=(th[i], dth[i]),
+                arrowprops=dict(arrowstyle="-|>", color=color, lw=0,
+                                mutation_scale=text_size(ax, 1.4), shrinkA=0, shrinkB=0))
+
+
+def _visible(th: np.ndarray, dth: np.ndarray, view: Any) -> np.ndarray:
+    (x0, x1), (y0, y1) = view
+    return (th >= x0) & (th <= x1) & (dth >= y0) & (dth <= y1)
+
+
+def _arrowheads_in_view(ax: Any, drawn: dict, view: Any) -> None:
+    """Draw one arrowhead on each half (theta' > 0, < 0) of the curves in view.
+
+    Only the copy nearest the centre of the view gets them, on its visible part: 85 % of the
+    way along where it moves right, 15 % where it moves left (clear of the labels at theta = 0
+    and pi).
+    """
+    centre = sum(view[0]) / 2
+    for regime in ("II", "III", "IV"):
+        if not drawn[regime]:
+            continue
+        nearest = min({c[0] for c in drawn[regime]}, key=lambda s: abs(s - centre))
+        for shift, th, dth, color in drawn[regime]:
+            if shift != nearest:
+                continue
+            for sign, frac in ((1, 0.85), (-1, 0.15)):
+                idx = np.flatnonzero(_visible(th, dth, view) & (sign * dth > 0))
+                if len(idx) < 2:
+                    continue
+                lo, hi = th[idx].min(), th[idx].max()
+                i = idx[np.argmin(np.abs(th[idx] - (lo + frac * (hi - lo))))]
+                _arrowhead(ax, th, dth, int(min(i, len(th) - 2)), color)
 
 
 def phase_portrait(omega0: float = 1.0, ax: Any = None,
                    amplitudes_deg: Sequence[float] = (30, 60, 90, 120, 150, 175),
                    kicks: Sequence[float] = (1.1, 1.3, 1.6),
-                   window: float = 3 * math.pi, label: bool = True) -> Any:
+                   window: float = 3 * math.pi, label: bool = True, arrows: bool = True,
+                   xlim: tuple[float, float] | None = None,
+                   ylim: tuple[float, float] | None = None) -> Any:
     r"""Fig. 2: curves (9) in the (θ, θ') plane, each labelled by c1 / ω0².
+
+    .. math:: (\theta')^2 - 2\omega_0^2\cos\theta = c_1 \quad (9)
 
     I (the point c1 = -2 ω0²), II (closed curves, from swings of the given
     amplitudes), III (the separatrix, c1 = 2 ω0²) and IV (rotations started at
     the bottom with θ' = 2 ω0 × kick, both directions). Every curve is a
     computed motion, not a contour of the energy.
+
+    Parameters
+    ----------
+    omega0 : float
+        ω0 = sqrt(g/ℓ).
+    ax : matplotlib.axes.Axes, optional
+        Where to draw; a new figure when None.
+    amplitudes_deg, kicks : list of float
+        The swings (II) by amplitude in degrees, and the rotations (IV) by θ'(0) / (2 ω0) > 1.
+    window : float
+        Half-width of the θ range drawn; the curves repeat with period 2π.
+    label : bool
+        Write c1 / ω0² on the curves (near θ = 0 and θ = ±π), and say so in the legend.
+    arrows : bool
+        Arrowheads in the direction of the motion, taken from consecutive times of each
+        motion: clockwise, rightwards where θ' > 0 and leftwards where θ' < 0.
+    xlim, ylim : (float, float), optional
+        A close-up. The legend then lists only the regimes with a curve in view.
+
+    Returns
+    -------
+    matplotlib.axes.Axes
 
     Examples
     --------
@@ -107,33 +181,57 @@ def phase_portrait(omega0: float = 1.0, ax: Any = None,
     >>> ax = phase_portrait()
     >>> ax.get_xlabel()
     '$\\theta$'
+
+    Two arrowheads on each of the six swings, one on each half of the separatrix and of the
+    three rotations in each direction, all clockwise:
+
+    >>> heads = [a for a in ax.texts if a.arrow_patch is not None]
+    >>> len(heads)
+    20
+    >>> all((a.xy[0] > a.xyann[0]) == (a.xy[1] > 0) for a in heads)
+    True
+    >>> close = phase_portrait(xlim=(1.5, 4.8), ylim=(-1.2, 1.2), label=False)
+    >>> [t.get_text() for t in close.get_legend().get_texts()]
+    ['II', 'III', 'IV']
+    >>> import matplotlib.pyplot as plt; plt.close("all")
     """
-    ax = _axes(ax)
+    ax = _axes(ax, figsize=(9, 5))
     w2 = omega0 ** 2
     shifts = 2 * math.pi * np.arange(-math.floor(window / (2 * math.pi) + 0.5),
                                      math.floor(window / (2 * math.pi) + 0.5) + 1)
+    # regime -> [(copy shift, theta, theta' in time order, colour)]
+    drawn: dict[str, list[tuple[float, np.ndarray, np.ndarray, str]]] = {
+        "I": [], "II": [], "III": [], "IV": []}
+    handles: dict[str, Any] = {}
+
+    def curve(regime: str, th: Any, dth: Any, color: str, shift: float = 0.0,
+              **style: Any) -> None:
+        (line,) = ax.plot(th, dth, color=color, **style)
+        handles.setdefault(regime, line)
+        drawn[regime].append((shift, np.atleast_1d(th), np.atleast_1d(dth), color))
+
     for s in shifts:
-        ax.plot([s], [0], "o", color="C3", ms=5, label="I" if s == 0 else None)
+        curve("I", [s], [0], "C3", marker="o", ls="none", ms=5)
     if label:
-        ax.annotate(_c1_text(-2.0), (0.0, -0.12), **dict(_inline("C3"), va="top"))
+        ax.annotate(_c1_text(-2.0), (0.0, -0.12), **dict(_inline(ax, "C3"), va="top"))
     for i, deg in enumerate(amplitudes_deg):
         m = solve(math.radians(deg), 0.0, omega0)
         th, dth = _orbit(m)
         for s in shifts:
-            first = s == 0 and i == 0
-            ax.plot(th + s, dth, color="C0", lw=1, label="II" if first else None)
+            curve("II", th + s, dth, "C0", s, lw=1)
         if label:
             # Inline labels at theta = 0, alternately on the upper and the lower half of the
             # curves: near the separatrix the curves are too close for one label above another.
             side = 1 if i % 2 == 0 else -1
-            ax.annotate(_c1_text(m.energy_constant / w2), (0.0, side * dth.max()), **_inline("C0"))
-    # The separatrix: theta = 2 gd(w0 t) from theta = -pi to pi, both branches.
+            ax.annotate(_c1_text(m.energy_constant / w2), (0.0, side * dth.max()),
+                        **_inline(ax, "C0"))
+    # The separatrix: theta = 2 gd(w0 t) from theta = -pi to pi, both branches. The lower one,
+    # theta = -2 gd(w0 t), is the upper one's samples in reverse order with theta' negated.
     x = np.linspace(-12, 12, 800)
     th, dth = 2 * np.arctan(np.sinh(x)), 2 * omega0 / np.cosh(x)
     for s in shifts:
-        for sign in (1, -1):
-            ax.plot(th + s, sign * dth, color="C3", lw=1.5,
-                    label="III" if (s == 0 and sign == 1) else None)
+        curve("III", th + s, dth, "C3", s, lw=1.5)
+        curve("III", th[::-1] + s, -dth[::-1], "C3", s, lw=1.5)
     for kick in kicks:
         for sign in (1, -1):
             m = solve(0.0, sign * 2 * omega0 * kick, omega0)
@@ -141,25 +239,36 @@ def phase_portrait(omega0: float = 1.0, ax: Any = None,
             t = np.linspace(-turns * m.period, turns * m.period, 1500)
             th, dth = m.theta(t), m.dtheta(t)
             keep = np.abs(th) <= window
-            ax.plot(th[keep], dth[keep], color="C2", lw=1,
-                    label="IV" if (kick == kicks[0] and sign == 1) else None)
+            curve("IV", th[keep], dth[keep], "C2", lw=1)
         if label:
             c1 = solve(0.0, 2 * omega0 * kick, omega0).energy_constant / w2
             ax.annotate(_c1_text(c1), (math.pi, 2 * omega0 * math.sqrt((kick ** 2) - 1)),
-                        **_inline("C2"))
+                        **_inline(ax, "C2"))
     if label:  # the separatrix, on the copy left of the centre when the window shows it
         ax.annotate(_c1_text(2.0), (-2 * math.pi if window >= 2 * math.pi else 0.0, 2 * omega0),
-                    **_inline("C3"))
-    ax.set_xlim(-window, window)
+                    **_inline(ax, "C3"))
+    ax.set_xlim(*(xlim or (-window, window)))
+    if ylim is not None:
+        ax.set_ylim(*ylim)
     ax.set_xlabel(r"$\theta$")
     ax.set_ylabel(r"$\theta'$")
     ax.set_xticks(np.arange(-3, 4) * math.pi,
                   [rf"${i}\pi$" if i not in (0, 1, -1) else ("0", r"$\pi$", r"$-\pi$")[i]
                    for i in range(-3, 4)])
+    if xlim is not None:
+        ax.set_xlim(*xlim)  # set_xticks may widen the view to its ticks
+    view = (ax.get_xlim(), ax.get_ylim())
+    if arrows:
+        _arrowheads_in_view(ax, drawn, view)
+    shown = [r for r, curves in drawn.items()
+             if any(np.any(_visible(th, dth, view)) for _, th, dth, _ in curves)]
+    notes = ([r"labels on the curves: $c_1/\omega_0^2$"] if label else []) + (
+        ["arrows: direction of motion"] if arrows else [])
     # Below the axes, in one row: inside, it would hide the rotations' curves.
-    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=4, fontsize=8, frameon=False,
-              title=r"regime (the labels on the curves are $c_1/\omega_0^2$)", title_fontsize=8)
-    return ax
+    ax.legend([handles[r] for r in shown], shown, loc="upper center",
+              bbox_to_anchor=(0.5, -0.14), ncol=4, frameon=False,
+              title="regime" + (" (" + "; ".join(notes) + ")" if notes else ""))
+    return readable(ax)
 
 
 def plot_motion(motions: Motion | Sequence[Motion], t: Any, axes: Any = None,
@@ -187,62 +296,7 @@ def plot_motion(motions: Motion | Sequence[Motion], t: Any, axes: Any = None,
     axes[0].set_ylabel(r"$\theta$")
     axes[1].set_ylabel(r"$\theta'$")
     axes[1].set_xlabel("$t$")
-    axes[0].legend(fontsize=8)
+    axes[0].legend()
+    for ax in axes:
+        readable(ax)
     return axes
-
-
-def plot_jacobi(k: float, u: Any, ax: Any = None, kc: float | None = None) -> Any:
-    """Plot sn, cn and dn over the given u (several periods), modulus k (or kc)."""
-    ax = _axes(ax)
-    u = np.asarray(u, dtype=float)
-    for name, values in zip(("sn", "cn", "dn"), jacobi(u, k, kc=kc), strict=True):
-        ax.plot(u, values, label=rf"$\mathrm{{{name}}}(u, {k:g})$")
-    K = complete_integral(k, kc=kc)
-    for j in range(int(u.min() // K), int(u.max() // K) + 1):
-        ax.axvline(j * K, color="0.85", lw=0.8, zorder=0)
-    ax.set_xlabel("$u$ (grey lines: multiples of $K_1$)")
-    ax.legend(fontsize=8)
-    return ax
-
-
-def plot_integral(moduli: Sequence[float] = (0.5, 0.9, 0.99), ax: Any = None) -> Any:
-    """Plot E1(z, k) of (17) on [-1, 1] beside arcsin z = E1(z, 0) (Proposition 1)."""
-    ax = _axes(ax)
-    z = np.linspace(-1, 1, 401)
-    ax.plot(z, np.arcsin(z), "k--", label=r"$\arcsin z$")
-    for k in moduli:
-        ax.plot(z, incomplete_integral(z, k), label=rf"$E_1(z, {k:g})$")
-    ax.set_xlabel("$z$")
-    ax.legend(fontsize=8)
-    return ax
-
-
-def plot_inverse(moduli: Sequence[float] = (0.5, 0.9, 0.99), ax: Any = None) -> Any:
-    """Plot G(u, k) of (19) on [-K1, K1] beside sin u on [-π/2, π/2]."""
-    ax = _axes(ax)
-    u = np.linspace(-math.pi / 2, math.pi / 2, 201)
-    ax.plot(u, np.sin(u), "k--", label=r"$\sin u$")
-    for k in moduli:
-        K = complete_integral(k)
-        u = np.linspace(-K, K, 401)
-        ax.plot(u, inverse_integral(u, k), label=rf"$G(u, {k:g})$")
-    ax.set_xlabel("$u$")
-    ax.legend(fontsize=8)
-    return ax
-
-
-def plot_amplitude(k: float, u: Any, ax: Any = None) -> Any:
-    r"""Plot am(u, k) = Î of (41) with its linear part and its periodic remainder.
-
-    The linear part is τu with τ = π/(2K1) (45); the remainder am(u) - τu has period 2K1.
-    """
-    ax = _axes(ax)
-    u = np.asarray(u, dtype=float)
-    tau = math.pi / (2 * complete_integral(k))
-    a = am(u, k)
-    ax.plot(u, a, label=rf"$\hat I(u, {k:g}) = \mathrm{{am}}$")
-    ax.plot(u, tau * u, "--", label=r"$\tau u$")
-    ax.plot(u, a - tau * u, label=r"$\hat I - \tau u$ (periodic)")
-    ax.set_xlabel("$u$")
-    ax.legend(fontsize=8)
-    return ax
