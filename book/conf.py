@@ -4,12 +4,15 @@ from __future__ import annotations
 
 import importlib.util
 import os
+import sys
 from pathlib import Path
 
 project = "The simple pendulum and elliptic functions"
 author = "elliptic-pendulum contributors, after S. Takeno (2024)"
 copyright = "2024-2026, elliptic-pendulum contributors"
 
+# book/_ext/classroom.py: the classroom notebooks in the build, the student book.
+sys.path.insert(0, str(Path(__file__).parent / "_ext"))
 extensions = [
     "myst_nb",
     "sphinx_proof",
@@ -19,6 +22,7 @@ extensions = [
     "sphinx.ext.intersphinx",
     "sphinxcontrib.bibtex",
     "sphinx_book_theme",
+    "classroom",
 ]
 
 # --- MyST -------------------------------------------------------------------------------

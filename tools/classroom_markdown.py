@@ -247,3 +247,35 @@ def _exercise_part(name: str, arg: str, label: str, inner: list[str], ctx: Conte
     if name == "solution":
         block += [f"{SENTINEL}SOLUTION-END{SENTINEL}", ""]
     return block
+
+
+def strip_solutions(text: str) -> str:
+    """Remove every solution from a MyST page: ``{solution}`` blocks and everything from a
+    ``{solution-start}`` to its ``{solution-end}``, the solution's code cells included.
+
+    The student book applies this at Sphinx's source-read: sphinx-exercise's own
+    ``hide_solutions`` drops the solution-start node but leaves the solution's text and cells
+    and an orphan solution-end node, which crashes the HTML writer.
+    """
+    lines = text.splitlines(keepends=True)
+    out: list[str] = []
+    skipping = False
+    i = 0
+    while i < len(lines):
+        opened = DIRECTIVE_OPEN.match(lines[i].strip())
+        name = opened["name"].strip() if opened else ""
+        if opened and name in {"solution", "solution-start", "solution-end"}:
+            fence = opened["fence"]
+            closing = re.compile(r"^\s*" + re.escape(fence[0]) + "{" + str(len(fence)) + r",}\s*$")
+            i += 1
+            while i < len(lines) and not closing.match(lines[i]):
+                i += 1
+            i += 1
+            skipping = name == "solution-start"
+            continue
+        if not skipping:
+            out.append(lines[i])
+        i += 1
+    if skipping:
+        raise ValueError("a solution-start has no solution-end")
+    return "".join(out)

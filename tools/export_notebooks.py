@@ -38,7 +38,9 @@ from classroom_markdown import SENTINEL, Context, convert_markdown
 EDITIONS = ("student", "instructor")
 GLUE_IMPORT = re.compile(r"^\s*from\s+myst_nb\s+import\s+glue\s*$", re.MULTILINE)
 GLUE_STANDIN = """\
-# The book pastes these values into its text (myst_nb.glue); this notebook's text already
+import IPython.display
+
+# The book pastes these values into its text (glue); this notebook's text already
 # shows them, so here glue only keeps them in the dict `glued` (and shows one if asked).
 glued = {}
 
@@ -85,9 +87,10 @@ def format_glue(text: str, fmt: str) -> str:
 def _code_cell(cell: nbformat.NotebookNode, first_glue: list[bool]) -> None:
     source = cell.source
     if GLUE_IMPORT.search(source):
-        source = GLUE_IMPORT.sub("", source).rstrip() + "\n"
+        source = GLUE_IMPORT.sub("", source)
         if first_glue[0]:  # one stand-in per notebook, or the dict would start again
-            source = "import IPython.display\n" + source + "\n\n" + GLUE_STANDIN
+            # First in the cell: the rest of the cell may glue already.
+            source = GLUE_STANDIN + "\n\n" + source
             first_glue[0] = False
         cell.source = re.sub(r"\n{4,}", "\n\n\n", source).strip("\n")
     if BOOK_ONLY.search(cell.source):
@@ -121,8 +124,8 @@ def export_page(
     def glued(key: str, fmt: str) -> str:
         if glue is None:
             return f"`{key}`"
-        if key not in glue:
-            raise ValueError(f"page {page!r} pastes {key!r}, which no cell glues")
+        if key not in glue:  # an error only if the text is kept (a student drops solutions)
+            return f"{SENTINEL}MISSING {key}{SENTINEL}"
         return format_glue(glue[key], fmt)
 
     def cite(role: str, keys: list[str]) -> str:
@@ -160,6 +163,9 @@ def export_page(
             elif piece == "SOLUTION-END":
                 in_solution = False
             elif piece.strip() and (not in_solution or edition == "instructor"):
+                missing = re.search(f"{SENTINEL}MISSING (.*?){SENTINEL}", piece)
+                if missing:
+                    raise ValueError(f"page {page!r} pastes {missing[1]!r}, which no cell glues")
                 cells.append(nbformat.v4.new_markdown_cell(piece.strip("\n")))
     if in_solution:
         raise ValueError(f"page {page!r}: a solution-start has no solution-end")
@@ -180,20 +186,31 @@ def export_page(
 
 
 def execute(nb: nbformat.NotebookNode, cwd: Path, kernel: str = "python3",
-            timeout: int = 600) -> nbformat.NotebookNode:
-    """Run a notebook top to bottom in a fresh kernel; raise on the first error."""
+            timeout: int = 600, kernel_dirs: list[str] | None = None) -> nbformat.NotebookNode:
+    """Run a notebook top to bottom in a fresh kernel; raise on the first error.
+
+    kernel_dirs: look the kernel up only there (e.g. a plain venv's share/jupyter/kernels),
+    not in the user's Jupyter folders.
+    """
+    from jupyter_client.kernelspec import KernelSpecManager
+    from jupyter_client.manager import KernelManager
     from nbclient import NotebookClient
 
-    NotebookClient(nb, timeout=timeout, kernel_name=kernel,
-                   resources={"metadata": {"path": str(cwd)}}).execute()
+    km = None
+    if kernel_dirs is not None:
+        km = KernelManager(kernel_name=kernel,
+                           kernel_spec_manager=KernelSpecManager(kernel_dirs=kernel_dirs))
+    # cleanup_kc: shut the kernel down afterwards even though the client does not own km.
+    NotebookClient(nb, km=km, timeout=timeout, kernel_name=kernel,
+                   resources={"metadata": {"path": str(cwd)}}).execute(cleanup_kc=True)
     return nb
 
 
 def harvest(nb: nbformat.NotebookNode, cwd: Path, kernel: str = "python3",
-            timeout: int = 600) -> dict[str, str]:
+            timeout: int = 600, kernel_dirs: list[str] | None = None) -> dict[str, str]:
     """Execute a notebook plus one cell that prints what `glue` kept: {name: text/plain}."""
     nb.cells.append(nbformat.v4.new_code_cell(GLUE_HARVEST, id="harvest"))
-    execute(nb, cwd, kernel, timeout)
+    execute(nb, cwd, kernel, timeout, kernel_dirs)
     cell = nb.cells.pop()
     text = "".join(o.get("text", "") for o in cell.outputs if o.output_type == "stream")
     return dict(json.loads(text.split("GLUED", 1)[1]))

@@ -1,0 +1,106 @@
+"""Sphinx extension: the classroom editions inside the book build, and the student book.
+
+- ``build-finished`` (html builder): tools/export_notebooks.py writes the notebooks into
+  ``<outdir>/classroom/<edition>/NN-page.ipynb`` with the values this very build glued
+  (myst-nb's ``jupyter_execute/<page>.glue.json``, so the notebook's text quotes exactly what
+  the HTML page shows), and zips each edition as ``classroom/<name>-<edition>.zip``.
+- ``html-page-context``: each chapter page's download menu (sphinx-book-theme) offers the
+  page's student notebook and the zip, as relative links into the build: they work offline.
+- ``-D hide_solutions=1`` (the student book, ``make book-student``): sphinx-exercise's own
+  option crashes the HTML writer (``departing unknown node type: solution_end_node``) and
+  would leave a gated solution's text and cells in the page. The solutions are removed from
+  the page source at ``source-read`` instead (before myst-nb parses and executes it), and
+  only the student edition is exported.
+"""
+
+from __future__ import annotations
+
+import sys
+import zipfile
+from pathlib import Path
+from typing import Any
+
+from sphinx.application import Sphinx
+from sphinx.util import logging
+
+TOOLS = Path(__file__).resolve().parents[2] / "tools"
+if str(TOOLS) not in sys.path:
+    sys.path.insert(0, str(TOOLS))
+
+import export_notebooks  # noqa: E402
+from classroom_labels import scan  # noqa: E402
+from classroom_markdown import strip_solutions  # noqa: E402
+
+logger = logging.getLogger(__name__)
+FOLDER = "classroom"
+ZIP_NAME = "elliptic-pendulum-notebooks"
+
+
+def _editions(app: Sphinx) -> tuple[str, ...]:
+    return ("student",) if app.config.hide_solutions else export_notebooks.EDITIONS
+
+
+def _strip(app: Sphinx, docname: str, source: list[str]) -> None:
+    if app.config.hide_solutions:
+        source[0] = strip_solutions(source[0])
+
+
+def _download_buttons(
+    app: Sphinx, pagename: str, templatename: str, context: dict[str, Any], doctree: Any
+) -> None:
+    if app.builder.name != "html":
+        return
+    files = app.env.classroom_files  # type: ignore[attr-defined]
+    if pagename not in files:
+        return
+    up = "../" * pagename.count("/")
+    buttons = [
+        {"type": "link", "url": f"{up}{FOLDER}/student/{files[pagename]}",
+         "text": "notebook", "icon": "fas fa-book-open",
+         "tooltip": "Download this chapter as a Jupyter notebook (student edition)",
+         "label": "download-student-notebook-button"},
+        {"type": "link", "url": f"{up}{FOLDER}/{ZIP_NAME}-student.zip",
+         "text": "all notebooks", "icon": "fas fa-file-archive",
+         "tooltip": "Download every chapter's student notebook (zip)",
+         "label": "download-student-zip-button"},
+    ]
+    for group in context.get("header_buttons", []):
+        if group.get("label") == "download-buttons":
+            group["buttons"][:0] = buttons
+            break
+    else:
+        context.setdefault("header_buttons", []).append(
+            {"type": "group", "tooltip": "Download this page", "icon": "fas fa-download",
+             "buttons": buttons, "label": "download-buttons"}
+        )
+
+
+def _scan(app: Sphinx, env: Any, docnames: list[str]) -> None:
+    # The notebook names in reading order, known before any page is written.
+    env.classroom_files = scan(Path(app.srcdir)).files
+
+
+def _export(app: Sphinx, exception: BaseException | None) -> None:
+    if exception is not None or app.builder.name != "html":
+        return
+    out = Path(app.outdir) / FOLDER
+    editions = _editions(app)
+    export_notebooks.export(
+        Path(app.srcdir), out, glue_from=Path(app.outdir).parent / "jupyter_execute",
+        editions=editions,
+    )
+    for edition in editions:
+        with zipfile.ZipFile(out / f"{ZIP_NAME}-{edition}.zip", "w", zipfile.ZIP_DEFLATED) as z:
+            for path in sorted((out / edition).glob("*.ipynb")):
+                z.write(path, f"{ZIP_NAME}-{edition}/{path.name}")
+    logger.info(f"classroom notebooks ({', '.join(editions)}) in {out}")
+
+
+def setup(app: Sphinx) -> dict[str, Any]:
+    """Register the classroom hooks."""
+    app.connect("source-read", _strip)
+    app.connect("env-before-read-docs", _scan)
+    # After sphinx-book-theme builds its header buttons (priority 501).
+    app.connect("html-page-context", _download_buttons, priority=510)
+    app.connect("build-finished", _export)
+    return {"version": "1.0", "parallel_read_safe": True, "parallel_write_safe": True}
