@@ -69,17 +69,39 @@ def test_printed_erratum_fails_and_its_correction_holds(err):
 
 
 def test_errata_catalogue():
-    # The two mathematical slips found in the note (§4 after (23), §5 partial fractions) and the
-    # two wrong symbols (§3 omega, §5 w_0) are all present.
+    # The two mathematical slips found in the note (§4 after (23), §5 partial fractions) are
+    # refuted by sympy; the two undefined symbols (§3 omega, §5 w_0) are typos that cannot be
+    # refuted (a new symbol would fail by construction), so only their corrections are checked.
     kinds = [(e.location, e.kind) for e in ERRATA]
     assert ("§4, after (23)", "error") in kinds
     assert ("§5, between (13) and (27)", "error") in kinds
-    assert sum(kind == "typo" for _, kind in kinds) == 2
+    typos = [e for e in ERRATA if e.kind == "typo"]
+    assert len(typos) == 2 and all(e.printed is None and e.corrected for e in typos)
+    assert {e.location for e in PRINTED} == {"§4, after (23)", "§5, between (13) and (27)"}
     for e in ERRATA:
         assert e.printed_text != e.corrected_text and e.comment
         assert e.kind in {"error", "typo", "notation", "statement", "transcription"}
+
+
+@pytest.mark.parametrize("err", [e for e in ERRATA if e.corrected is not None],
+                         ids=[e.corrected.name for e in ERRATA if e.corrected is not None])
+def test_every_correction_rejects_its_mutant(err):
+    assert err.corrected.check() and err.corrected.mutant is not None
+    assert not err.corrected.mutant_identity().check(), err.location
+
+
+def test_the_general_solution_statement():
+    # issue 7 item 1: not "(25) is the general non-constant solution of (12)".
     statement = next(e for e in ERRATA if e.kind == "statement")
-    assert statement.corrected.check()
+    assert "(12)" not in statement.corrected_text and "unique" in statement.corrected_text
+    assert "rest at theta_0 for a while" in statement.comment
+
+
+def test_no_transcription_claim_about_5():
+    # The note's text copy has the approximate-equality sign before (5) (sin theta \doteq theta);
+    # only after (26) does it show a division sign.
+    entry = next(e for e in ERRATA if e.kind == "transcription")
+    assert "likewise" not in entry.comment.lower() and "before (5)" in entry.comment
 
 
 def test_names_are_unique_and_every_statement_renders():
@@ -91,8 +113,9 @@ def test_names_are_unique_and_every_statement_renders():
 
 def test_every_numbered_equation_the_brief_lists_is_covered():
     covered = " ".join(e.equation for e in IDENTITIES)
-    for eq in ["(3)", "(4)", "(8)", "(9)", "(10)", "(13)", "(15)", "(22)", "(23)", "(26)", "(27)",
-               "(28)", "(29)", "(32)", "(33)", "(38)", "(42)", "(43)", "(45)", "Proposition 1.2"]:
+    for eq in ["(3)", "(4)", "(8)", "(9)", "(10)", "(13)", "(15)", "(16)", "(22)", "(23)", "(26)",
+               "(27)", "(28)", "(29)", "(32)", "(33)", "(34)", "(37)", "(38)", "(42)", "(43)",
+               "(45)", "Proposition 1.2"]:
         assert eq in covered, eq
 
 
