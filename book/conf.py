@@ -165,3 +165,6 @@ html_theme_options = {
     "use_fullscreen_button": False,
 }
 html_last_updated_fmt = None
+# Wide formulas scroll in their own block on a phone; see the comments in the files.
+html_css_files = ["reader.css"]
+html_js_files = ["reader.js"]

@@ -93,6 +93,14 @@ mathjax_path = "mathjax/tex-chtml.js"
 
 html_theme = "sphinx_book_theme"
 html_title = "elliptic-pendulum reference"
-html_static_path = ["_static", str(Path(_mathjax_spec.origin).parent / "static")]
+html_static_path = [
+    "_static",
+    str(Path(_mathjax_spec.origin).parent / "static"),
+    # The book's reader.css and reader.js (wide formulas, signatures and tables scroll or
+    # wrap on a phone), one copy for both sites.
+    str(Path(__file__).resolve().parents[1] / "book" / "_static"),
+]
+html_css_files = ["reader.css"]
+html_js_files = ["reader.js"]
 html_theme_options = {"show_toc_level": 2}
 html_last_updated_fmt = None

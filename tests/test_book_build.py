@@ -66,3 +66,15 @@ def test_library_names_link_to_the_reference_site(built_book, built_docs) -> Non
             elif f'id="{anchor}"' not in target.read_text(encoding="utf-8"):
                 broken.append(f"{page}: {link} (no such entry)")
     assert broken == []
+
+
+def test_book_build_output_is_quiet(book_build: Build) -> None:
+    # Nothing a reader of `make book` would take for trouble: no warning in any form (Sphinx's
+    # "WARNING:", a kernel's "[IPKernelApp] WARNING |", a Python DeprecationWarning), no
+    # traceback, and not the kernel's per-page notice about unencrypted TCP (book/conf.py).
+    noisy = [
+        line
+        for line in book_build.output.splitlines()
+        if re.search(r"WARNING|Warning\b|Traceback|ERROR|CRITICAL|without encryption", line)
+    ]
+    assert noisy == []

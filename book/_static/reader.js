@@ -1,0 +1,21 @@
+// Inline formulas wider than their line get a scrolling box of their own (reader.css):
+// MathJax 3 does not line-break inline math. Marked once MathJax has typeset the page, and
+// again when the window changes width.
+(function () {
+  "use strict";
+  function mark() {
+    document.querySelectorAll('mjx-container:not([display="true"])').forEach(function (math) {
+      math.classList.remove("ep-wide-inline");
+      var line = math.closest("p, li, dd, td, th, div, section") || document.body;
+      if (math.getBoundingClientRect().width > line.clientWidth) {
+        math.classList.add("ep-wide-inline");
+      }
+    });
+  }
+  window.addEventListener("load", function () {
+    if (window.MathJax && MathJax.startup && MathJax.startup.promise) {
+      MathJax.startup.promise.then(mark);
+    }
+  });
+  window.addEventListener("resize", mark);
+})();
