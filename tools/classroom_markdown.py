@@ -23,6 +23,7 @@ ROLE = re.compile(r"\{(?P<role>[\w:+-]+)\}`(?P<content>[^`]*)`")
 TARGET = re.compile(r"^\s*\((?P<label>[^()\s]+)\)=\s*$")
 DMATH_LABEL = re.compile(r"^(?P<close>.*\$\$)\s*\((?P<label>[^()\s]+)\)\s*$")
 TEXT_AND_TARGET = re.compile(r"^(?P<text>.*?)\s*<(?P<target>[^<>]+)>$", re.DOTALL)
+MD_LINK = re.compile(r"\]\((?P<page>[\w./-]+?)\.md(?P<frag>#[^)\s]*)?\)")
 HEADING = re.compile(r"^#{1,6}\s+(?P<title>.*?)\s*#*\s*$")
 
 # Directives shown as a bold heading over a block quote, with that heading.
@@ -74,6 +75,14 @@ def link(ctx: Context, label: str, text: str) -> str:
     if target.kind == "page":
         return f"[{text}]({ctx.files[target.page]})"
     return f"[{text}]({'' if here else ctx.files[target.page]}#{label})"
+
+
+def _page_link(m: re.Match[str], ctx: Context) -> str:
+    """A Markdown link to another page of the book becomes a link to its notebook."""
+    page = _doc_label(m["page"])
+    if page not in ctx.files:
+        raise ValueError(f"link to unknown page {m['page']}.md in page {ctx.page!r}")
+    return f"]({ctx.files[page]}{m['frag'] or ''})"
 
 
 def _split(content: str) -> tuple[str | None, str]:
@@ -178,6 +187,7 @@ def convert_markdown(text: str, ctx: Context) -> str:
         out.append(line)
         i += 1
     joined = convert_roles("\n".join(out), ctx)  # whole text: a role may span two lines
+    joined = MD_LINK.sub(lambda m: _page_link(m, ctx), joined)
     joined = re.sub(SENTINEL + r"V(\d+)" + SENTINEL, lambda m: verbatim[int(m[1])], joined)
     return re.sub(r"\n{3,}", "\n\n", joined).strip("\n")
 

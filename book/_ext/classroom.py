@@ -85,10 +85,14 @@ def _export(app: Sphinx, exception: BaseException | None) -> None:
         return
     out = Path(app.outdir) / FOLDER
     editions = _editions(app)
-    export_notebooks.export(
-        Path(app.srcdir), out, glue_from=Path(app.outdir).parent / "jupyter_execute",
-        editions=editions,
-    )
+    try:
+        export_notebooks.export(
+            Path(app.srcdir), out, glue_from=Path(app.outdir).parent / "jupyter_execute",
+            editions=editions,
+        )
+    except ValueError as err:  # a page the exporter cannot translate: say which, and why
+        logger.warning(f"classroom notebooks not exported: {err}", type="classroom")
+        return
     for edition in editions:
         with zipfile.ZipFile(out / f"{ZIP_NAME}-{edition}.zip", "w", zipfile.ZIP_DEFLATED) as z:
             for path in sorted((out / edition).glob("*.ipynb")):
@@ -96,8 +100,29 @@ def _export(app: Sphinx, exception: BaseException | None) -> None:
     logger.info(f"classroom notebooks ({', '.join(editions)}) in {out}")
 
 
+def _builder_inited(app: Sphinx) -> None:
+    app.config.html_static_path.append(str(Path(__file__).parent / "static"))
+    # Sphinx falls back to a builder's format ("html") for node visitors only when no
+    # extension registered visitors under the builder's own name. Some register for
+    # "singlehtml", and then myst-nb's HideCodeCellNode (html only) has none there: copy them.
+    handlers = app.registry.translation_handlers
+    if app.builder.name == "singlehtml":  # the page that tools/print_pdf.py prints
+        # Equation numbers (\tag) are MathJax text: in the page's font they are real text
+        # in the PDF (searchable, and what tests/test_pdf.py reads), not glyph drawings.
+        config = dict(app.config.mathjax3_config or {})
+        config["chtml"] = {**config.get("chtml", {}), "mtextInheritFont": True}
+        app.config.mathjax3_config = config
+    if app.builder.name != "html" and app.builder.format == "html":
+        own = handlers.setdefault(app.builder.name, {})
+        for node, visitors in handlers.get("html", {}).items():
+            own.setdefault(node, visitors)
+
+
 def setup(app: Sphinx) -> dict[str, Any]:
     """Register the classroom hooks."""
+    app.connect("builder-inited", _builder_inited)
+    # Printing (Chromium's PDF or a reader's Ctrl-P): no navigation, outputs wrapped.
+    app.add_css_file("classroom_print.css", media="print")
     app.connect("source-read", _strip)
     app.connect("env-before-read-docs", _scan)
     # After sphinx-book-theme builds its header buttons (priority 501).
