@@ -1,0 +1,110 @@
+"""The registry of the book's claims (registry.py, book/checks.md): every claim has a check or a
+stated status, and every check that can carry a mutant carries one (issue 7, "What is checked")."""
+
+import textwrap
+from pathlib import Path
+
+import pytest
+
+from elliptic_pendulum import registry
+from elliptic_pendulum.symbolic import identities
+
+BOOK = Path(__file__).resolve().parents[1] / "book"
+CHECKS = registry.scan(BOOK)
+
+
+def test_the_scanner_finds_the_books_checks():
+    assert len(CHECKS) > 100
+    assert {c.kind for c in CHECKS} == set(registry.KINDS[:3])
+
+
+def test_every_claim_has_a_check_or_a_justified_status():
+    table = registry.coverage(CHECKS)
+    uncovered = [c for c, found in table.items() if not found and c not in registry.STATUS]
+    assert not uncovered, f"claims with neither a check nor a stated status: {uncovered}"
+
+
+def test_every_status_is_justified():
+    for claim, (kind, why) in registry.STATUS.items():
+        assert claim in registry.CLAIMS, claim
+        assert kind in {"definition", "proof in the text only"}, claim
+        assert len(why.split()) >= 3, claim
+
+
+def test_every_identity_the_book_checks_is_named_and_has_a_mutant():
+    for c in CHECKS:
+        if c.kind == "sympy identity":
+            assert c.name, f"{c.page}.md:{c.line}: verify.identity of a statement without a name"
+            assert c.mutant, f"{c.page}.md:{c.line}: {c.name} has no mutant"
+
+
+def test_every_numerical_check_in_the_book_passes_a_mutant():
+    for c in CHECKS:
+        if c.kind == "independent numerical check":
+            assert c.mutant, f"{c.page}.md:{c.line}: verify.numeric({c.claim!r}) has no mutant"
+
+
+def test_every_identity_of_the_library_has_a_mutant():
+    assert all(e.mutant is not None for e in identities())
+
+
+def test_claim_labels():
+    assert registry.claims_of("(5)-(7)") == ["(5)", "(6)", "(7)"]
+    assert registry.claims_of("(35), (41)") == ["(35)", "(41)"]
+    assert registry.claims_of("Proposition 1.2") == ["Proposition 1.2"]
+    assert registry.claims_of("§4, after (23)") == []  # a remark after (23), not (23)
+    assert registry.claims_of("(47)") == []
+    assert len(registry.CLAIMS) == 46 + 3 + 3 + 2
+
+
+def test_the_scanner_reads_loops_assignments_and_inline_identities(tmp_path):
+    # A page with each form a chapter uses; the scanner must see all of them, and the mutant
+    # (or its absence) of each.
+    page = textwrap.dedent('''
+        # A page
+
+        ## First section
+
+        ```{code-cell} ipython3
+        :tags: [hide-input]
+
+        for name in ("eq13", "eq13_root"):
+            display(verify.identity(ids[name]))
+        e16 = sym.Identity("eq16x", "(16)", lhs, rhs, mutant=wrong)
+        display(verify.identity(e16))
+        verify.identity(sym.Identity("bare", "(17)", lhs, rhs))
+        ```
+
+        ### Deeper
+
+        ```{code-cell} ipython3
+        verify.numeric("(26)", res, f, m, tol=1e-12, over="x", mutant_label="$8K_1$")
+        verify.numeric("(8)", res, f, tol=1e-12, over="x")
+        verify.fact("Lemma 2.3", ok, "text")
+        ```
+        ''')
+    (tmp_path / "page.md").write_text(page)
+    found = registry.scan(tmp_path)
+    got = [(c.claim, c.kind.split()[0], bool(c.mutant), c.anchor) for c in found]
+    assert got == [
+        ("(13)", "sympy", True, "first-section"),
+        ("(13)", "sympy", True, "first-section"),
+        ("(16)", "sympy", True, "first-section"),
+        ("(17)", "sympy", False, "first-section"),
+        ("(26)", "independent", True, "deeper"),
+        ("(8)", "independent", False, "deeper"),
+        ("Lemma 2.3", "numerical", False, "deeper"),
+    ]
+    assert found[4].mutant == "$8K_1$" and found[0].name == "eq13"
+
+
+def test_an_unknown_identity_name_is_an_error(tmp_path):
+    (tmp_path / "p.md").write_text('```{code-cell} ipython3\nverify.identity(ids["nope"])\n```\n')
+    with pytest.raises(KeyError):
+        registry.scan(tmp_path)
+
+
+def test_the_table_has_one_row_per_claim():
+    rows = registry.markdown(CHECKS).splitlines()
+    assert len(rows) == 2 + len(registry.CLAIMS)
+    assert all(row.count(" | ") >= 3 for row in rows[2:])
