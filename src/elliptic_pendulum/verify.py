@@ -172,6 +172,8 @@ def numeric(
         bad = float(residual(mutant))
         _require(not bad <= tol, f"{claim}: the mutant passes too ({measure} {bad:.3g})")
         text += f"; rejects the mutant {mutant_label or 'formula'} ({measure} {_fmt(bad)})"
+    else:
+        text += "; no mutant"  # said, so that a reader sees the check is the weaker kind
     return Verdict(claim, "numerical", text)
 
 

@@ -1,0 +1,73 @@
+"""The book's check helper (verify.py): each check passes on the truth, fails on a wrong formula,
+and fails when its mutant would pass too (a check that cannot fail is caught where written)."""
+
+import math
+
+import pytest
+import sympy as sp
+
+from elliptic_pendulum import verify
+from elliptic_pendulum.symbolic import Identity, identity
+
+x = sp.Symbol("x", real=True)
+
+
+def test_identity_passes_and_names_its_mutant():
+    v = verify.identity(identity("eq26"))
+    assert v.claim == "(26)" and v.kind == "sympy identity"
+    assert "8K_1" in v.text and v.display  # the statement is shown above the verdict
+    assert str(v).startswith("✔ (26) holds identically")
+    assert v._repr_markdown_().startswith("$$\n")
+
+
+def test_identity_fails_when_sympy_does_not_confirm_it():
+    wrong = Identity("wrong", "(0)", sp.sin(x) ** 2, 1 - sp.sin(x) ** 2)
+    with pytest.raises(AssertionError, match="sympy does not confirm it"):
+        verify.identity(wrong)
+
+
+def test_identity_fails_when_its_mutant_passes_too():
+    # sin^2 + cos^2 = 1 with the "mutant" 1: the check cannot tell them apart.
+    vacuous = Identity("vacuous", "(0)", sp.sin(x) ** 2 + sp.cos(x) ** 2, sp.Integer(1),
+                       mutant=sp.cos(2 * x) + 2 * sp.sin(x) ** 2)
+    with pytest.raises(AssertionError, match="cannot tell the mutant apart"):
+        verify.identity(vacuous)
+
+
+def _period_error(T):
+    # The zeros of sin(t) a period apart, found independently: 0 and 2 pi.
+    return abs(T() - 2 * math.pi)
+
+
+def test_numeric_passes_rejects_and_reports_its_mutant():
+    v = verify.numeric("(8)", _period_error, lambda: 2 * math.pi, lambda: 4 * math.pi,
+                       tol=1e-12, over="one period", mutant_label="4 pi")
+    assert v.kind == "numerical" and "rejects the mutant 4 pi" in v.text
+
+
+def test_numeric_without_a_mutant_says_so():
+    v = verify.numeric("(8)", _period_error, lambda: 2 * math.pi, tol=1e-12, over="x")
+    assert v.text.endswith("; no mutant")
+
+
+def test_numeric_fails_on_a_wrong_formula():
+    with pytest.raises(AssertionError, match="> tolerance"):
+        verify.numeric("(8)", _period_error, lambda: 4 * math.pi, tol=1e-12, over="x")
+
+
+def test_numeric_fails_when_the_mutant_is_within_tolerance():
+    with pytest.raises(AssertionError, match="the mutant passes too"):
+        verify.numeric("(8)", _period_error, lambda: 2 * math.pi,
+                       lambda: 2 * math.pi + 1e-14, tol=1e-12, over="x")
+
+
+def test_numeric_treats_nan_as_failure():
+    # A residual of nan is not <= tol: a broken computation must not pass.
+    with pytest.raises(AssertionError):
+        verify.numeric("(8)", lambda f: f(), lambda: math.nan, tol=1.0, over="x")
+
+
+def test_fact():
+    assert str(verify.fact("(14)", True, "xi stays in [-1, 1]")) == "✔ (14) xi stays in [-1, 1]"
+    with pytest.raises(AssertionError, match="not so"):
+        verify.fact("(14)", False, "xi stays in [-1, 1]")
