@@ -4,7 +4,9 @@
 #   make book         HTML book in book/_build/html (myst-nb cache: unchanged cells are not re-run)
 #   make book-strict  the same from clean, every notebook re-executed (what CI checks)
 #   make docs         API/reference site in docs/_build/html
-#   make notebooks    classroom notebooks in notebooks/, executed in a fresh kernel
+#   make notebooks    classroom notebooks, notebooks/student and notebooks/instructor
+#   make book-student the book without solutions in book/_build/student/html
+#   make pdf          book/_build/pdf/book.pdf (solutions open) and book-student.pdf
 #   make bench        speed and accuracy tables
 #   make test         everything: unit, property and doctests, book and docs builds,
 #                     notebook execution, headless-Chromium check (see tests/)
@@ -22,7 +24,7 @@ export PATH := $(CURDIR)/$(VENV)/bin:$(PATH)
 # Opt in to Jupyter's platformdirs layout now, which also silences its migration warning.
 export JUPYTER_PLATFORM_DIRS := 1
 
-.PHONY: venv book book-strict docs notebooks bench test lint clean
+.PHONY: venv book book-strict book-student docs notebooks pdf bench test lint clean
 
 venv: $(STAMP)
 
@@ -44,8 +46,20 @@ book-strict: docs
 docs: $(STAMP)
 	$(SPHINX) -b html docs docs/_build/html
 
+# Both editions, notebooks/student and notebooks/instructor; each instructor notebook runs
+# once here (the glued numbers of its text come from that run).
 notebooks: $(STAMP)
+	rm -rf notebooks/student notebooks/instructor
 	$(PY) tools/export_notebooks.py book notebooks --execute
+
+# The book without solutions (book/_ext/classroom.py removes them from the page sources).
+book-student: docs
+	$(SPHINX) -D hide_solutions=1 -b html book book/_build/student/html
+
+# The whole book as one PDF each for instructors (solutions open) and students (none):
+# a single-page build of each, printed by headless Chromium once MathJax is done.
+pdf: docs
+	$(PY) tools/build_pdf.py book book/_build
 
 bench: $(STAMP)
 	$(PY) benchmarks/bench_theta.py

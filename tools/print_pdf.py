@@ -42,7 +42,8 @@ READY = """
   await Promise.all([...document.images].map(img => img.complete ? null :
       new Promise(done => { img.onload = img.onerror = done; })));
   return [document.querySelectorAll("mjx-container").length,
-          document.querySelectorAll(".math").length];
+          document.querySelectorAll(".math").length,
+          [...document.images].filter(img => !img.naturalWidth).map(img => img.src)];
 })()
 """
 # sphinx-togglebutton folds a solution (":class: dropdown") into .toggle-hidden, and
@@ -130,10 +131,13 @@ def print_pdf(page: Path, pdf: Path, open_solutions: bool = False, timeout: floa
             # The document must exist before READY can look at it.
             tools.evaluate("new Promise(r => document.readyState === 'complete' ? r() :"
                            " addEventListener('load', () => r()))", timeout)
-            formulas, math = tools.evaluate(READY, timeout)
+            formulas, math, broken = tools.evaluate(READY, timeout)
+            if broken:  # a figure that would be missing from the paper
+                raise RuntimeError(f"{page}: images that did not load: {broken[:5]}")
             if math and not formulas:  # e.g. MathJax from a CDN, and no network
                 raise RuntimeError(f"{page} has {math} formulas but MathJax typeset none")
             solutions = tools.evaluate(OPEN_SOLUTIONS) if open_solutions else 0
+            images = tools.evaluate("document.images.length")
             errors = tools.evaluate("document.querySelectorAll('mjx-merror').length")
             if errors:
                 raise RuntimeError(f"MathJax could not typeset {errors} formulas in {page}")
@@ -152,7 +156,7 @@ def print_pdf(page: Path, pdf: Path, open_solutions: bool = False, timeout: floa
         shutil.rmtree(profile, ignore_errors=True)
     pdf.parent.mkdir(parents=True, exist_ok=True)
     pdf.write_bytes(base64.b64decode(result["data"]))
-    return {"formulas": formulas, "solutions": solutions}
+    return {"formulas": formulas, "solutions": solutions, "images": images}
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -1,0 +1,119 @@
+"""The student book (`make book-student`, ``-D hide_solutions=1``) and the classroom files
+inside the HTML build (book/_ext/classroom.py).
+
+sphinx-exercise's own hide_solutions crashes the HTML writer on a gated solution
+(``departing unknown node type: solution_end_node``) and would leave the solution's text and
+cells in the page; the extension removes the solutions from the page sources instead.
+"""
+
+from __future__ import annotations
+
+import re
+import subprocess
+import sys
+import zipfile
+from pathlib import Path
+
+import pytest
+from conftest import BOOK, ROOT, Build, sphinx_build
+from test_notebooks import SYNTHETIC
+
+sys.path.insert(0, str(ROOT / "tools"))
+import export_notebooks as ex  # noqa: E402
+from classroom_labels import scan  # noqa: E402
+
+EXERCISE = re.compile(
+    r'<div class="exercise[^"]*" id="(?P<label>[^"]+)">\s*<p class="admonition-title">'
+    r'\s*<span class="caption-number">Exercise (?P<number>\d+) </span>'
+)
+
+
+def _tiny(tmp_path: Path) -> Path:
+    book = tmp_path / "tiny"
+    book.mkdir()
+    for name, text in SYNTHETIC.items():
+        (book / name).write_text(text, encoding="utf-8")
+    return book
+
+
+def _build_tiny(book: Path, out: Path, *extra: str) -> subprocess.CompletedProcess[str]:
+    return subprocess.run(
+        [sys.executable, "-m", "sphinx", "-W", "--keep-going", "-E", "-q", *extra,
+         "-b", "html", str(book), str(out)],
+        capture_output=True, text=True, timeout=600,
+    )
+
+
+@pytest.mark.slow
+def test_hide_solutions_builds_and_drops_gated_solutions(tmp_path: Path) -> None:
+    book = _tiny(tmp_path)
+    full = _build_tiny(book, tmp_path / "full")
+    student = _build_tiny(book, tmp_path / "student", "-D", "hide_solutions=1")
+    assert full.returncode == 0, full.stdout + full.stderr
+    assert student.returncode == 0, student.stdout + student.stderr
+    shown, hidden = (
+        re.sub(r"<[^>]+>", "", (tmp_path / b / "alpha.html").read_text(encoding="utf-8"))
+        for b in ("full", "student")
+    )
+    for text in ("Worked.", "answer = 42"):  # the solution's text and its cell
+        assert text in shown and text not in hidden
+    assert "Compute." in hidden and "Exercise 2" in hidden
+    # The student build holds only the student edition.
+    assert (tmp_path / "student" / "classroom" / "student" / "02-alpha.ipynb").exists()
+    assert not (tmp_path / "student" / "classroom" / "instructor").exists()
+
+
+@pytest.fixture(scope="session")
+def student_book(tmp_path_factory: pytest.TempPathFactory, docs_build: Build) -> Build:
+    cache = tmp_path_factory.getbasetemp() / "jupyter-cache"  # shared with test_pdf
+    return sphinx_build(
+        BOOK, tmp_path_factory.mktemp("student") / "html",
+        "-D", "hide_solutions=1", "-D", f"nb_execution_cache_path={cache}",
+        env={"ELLIPTIC_PENDULUM_DOCS_HTML": str(docs_build.outdir)},
+    )
+
+
+@pytest.mark.slow
+def test_student_book_has_exercises_and_no_solutions(student_book: Build) -> None:
+    assert student_book.returncode == 0, student_book.output[-3000:]
+    assert student_book.warnings == []
+    index = scan(BOOK)
+    seen = {}
+    for page in index.pages:
+        html = (student_book.outdir / f"{page}.html").read_text(encoding="utf-8")
+        assert 'class="solution' not in html and "Solution to" not in html, page
+        seen |= {m["label"]: m["number"] for m in EXERCISE.finditer(html)}
+    # Every exercise is there, numbered as the notebooks number it.
+    assert seen == index.exercise_numbers
+    assert not (student_book.outdir / "classroom" / "instructor").exists()
+
+
+@pytest.mark.slow
+def test_book_offers_each_chapter_notebook(built_book: Path) -> None:
+    index = scan(BOOK)
+    for page in index.pages:
+        html = (built_book / f"{page}.html").read_text(encoding="utf-8")
+        link = f"classroom/student/{index.files[page]}"
+        assert f'href="{link}"' in html, page
+        assert (built_book / link).is_file()
+    for edition in ("student", "instructor"):
+        archive = built_book / "classroom" / f"elliptic-pendulum-notebooks-{edition}.zip"
+        with zipfile.ZipFile(archive) as z:
+            names = sorted(Path(n).name for n in z.namelist())
+        assert names == sorted(index.files.values()), edition
+
+
+@pytest.mark.slow
+def test_notebooks_in_the_build_paste_every_glued_value(built_book: Path) -> None:
+    import nbformat
+
+    index = scan(BOOK)
+    glued = 0
+    for page in index.pages:
+        keys = ex.glue_from_build(built_book.parent / "jupyter_execute", page)
+        for edition in ("student", "instructor"):
+            nb = nbformat.read(built_book / "classroom" / edition / index.files[page], 4)
+            text = "\n".join(c.source for c in nb.cells if c.cell_type == "markdown")
+            assert [k for k in keys if f"`{k}`" in text] == [], (page, edition)
+        glued += len(keys)
+    assert glued > 50  # the values came from this build's jupyter_execute folder

@@ -1,0 +1,66 @@
+"""Build the book as two PDFs: <build>/pdf/book.pdf (solutions open) and book-student.pdf.
+
+Each is a Sphinx ``singlehtml`` build of the whole book (the student one with
+``-D hide_solutions=1``, which book/_ext/classroom.py turns into "no solutions at all"),
+printed by headless Chromium (tools/print_pdf.py) once MathJax has typeset it. Why Chromium
+and not LaTeX: the tests already need Debian's chromium, the PDF then shows exactly what the
+HTML book shows (myst-nb outputs, MathJax, the figures), and TeX Live would add a large
+install to CI. ``make pdf`` runs this with the build folder book/_build.
+
+Usage::
+
+    python tools/build_pdf.py book book/_build [--execution-cache DIR]
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+from print_pdf import print_pdf
+
+EDITIONS = {"book": (".", [], True), "book-student": ("student", ["-D", "hide_solutions=1"], False)}
+
+
+def build(book: Path, build_dir: Path, cache: Path | None = None) -> dict[str, dict]:
+    """Both single-page builds and both PDFs; return, per PDF, the seconds of each step
+    and what the printer saw (formulas typeset, solutions opened, images)."""
+    env = dict(os.environ, JUPYTER_PLATFORM_DIRS="1")
+    # The notebook kernel must see this interpreter's packages.
+    env["PATH"] = str(Path(sys.executable).parent) + os.pathsep + env.get("PATH", "")
+    report: dict[str, dict] = {}
+    for name, (sub, extra, solutions) in EDITIONS.items():
+        out = build_dir / sub / "singlehtml"
+        options = ["-D", f"nb_execution_cache_path={cache}"] if cache else []
+        start = time.perf_counter()
+        subprocess.run(
+            [sys.executable, "-m", "sphinx", "-n", "-W", "--keep-going", "-q", *options,
+             *extra, "-b", "singlehtml", str(book), str(out)],
+            check=True, env=env,
+        )
+        built = time.perf_counter() - start
+        start = time.perf_counter()
+        seen = print_pdf(out / "index.html", build_dir / "pdf" / f"{name}.pdf", solutions)
+        report[name] = {"build s": built, "print s": time.perf_counter() - start, **seen}
+    return report
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=(__doc__ or "").splitlines()[0])
+    parser.add_argument("book", type=Path, help="the book's source folder")
+    parser.add_argument("build", type=Path, help="the build folder (book/_build)")
+    parser.add_argument("--execution-cache", type=Path, help="myst-nb's cache folder")
+    args = parser.parse_args(argv)
+    for name, seen in build(args.book, args.build, args.execution_cache).items():
+        print(f"{name}.pdf: " + ", ".join(
+            f"{k} {v:.1f}" if isinstance(v, float) else f"{k} {v}" for k, v in seen.items()))
+    print(f"wrote {args.build / 'pdf' / 'book.pdf'} and book-student.pdf")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
