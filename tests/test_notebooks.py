@@ -24,7 +24,7 @@ import export_notebooks as ex  # noqa: E402
 from classroom_labels import scan  # noqa: E402
 
 BOOK_INDEX = scan(BOOK)
-PAGES = BOOK_INDEX.pages
+PAGES = BOOK_INDEX.exported
 # Markup that Jupyter would show raw.
 MYST_LEFTOVERS = re.compile(r"\{[\w:+-]+\}`|^\s*(:::|```)\{|^\s*\([\w:.-]+\)=\s*$", re.M)
 KERNEL = "plain-venv"
@@ -149,7 +149,7 @@ def test_student_has_answer_cells_and_no_solutions(tmp_path: Path) -> None:
                      and re.match(r"#+ Solution to Exercise \d+", c.source)]
         assert len(solutions) == len(s_ex), teacher.name
         total += len(s_ex)
-    numbers = [n for page in PAGES for lab, n in BOOK_INDEX.exercise_numbers.items()
+    numbers = [n for page in BOOK_INDEX.pages for lab, n in BOOK_INDEX.exercise_numbers.items()
                if BOOK_INDEX.targets[lab].page == page]
     assert numbers == [str(i) for i in range(1, total + 1)]  # one count through the book
 
@@ -244,6 +244,9 @@ True.
 Careful.
 :::
 
+sympy identity
+: both sides agree.
+
 :::{exercise}
 :label: ex-a
 
@@ -301,7 +304,8 @@ def test_synthetic_book(tiny_book: Path, tmp_path: Path) -> None:
         "[Zeta first](01-zeta.ipynb)", "[Fig. 1](#fig-line)", "**Fig. 1.** A line.",
         "\\[[Doe and Roe, 1999](#ref-k1)\\]", "[Doe and Roe [1999]](#ref-k1)", "`ep.solve`",
         "[Proposition 1](#prop-a)", "300 states with 0.12 error", "**Proposition 1 (Name).**",
-        "**Numerical note.**", '<a id="ref-k1"></a>**[Doe and Roe, 1999]**',
+        "**Numerical note.**", "**sympy identity**: both sides agree.",
+        '<a id="ref-k1"></a>**[Doe and Roe, 1999]**',
         "### Exercise 2", "#### Solution to Exercise 2",
     ]:
         assert expected in text, expected

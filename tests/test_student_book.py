@@ -91,7 +91,7 @@ def test_student_book_has_exercises_and_no_solutions(student_book: Build) -> Non
 @pytest.mark.slow
 def test_book_offers_each_chapter_notebook(built_book: Path) -> None:
     index = scan(BOOK)
-    for page in index.pages:
+    for page in index.exported:
         html = (built_book / f"{page}.html").read_text(encoding="utf-8")
         link = f"classroom/student/{index.files[page]}"
         assert f'href="{link}"' in html, page
@@ -109,7 +109,7 @@ def test_notebooks_in_the_build_paste_every_glued_value(built_book: Path) -> Non
 
     index = scan(BOOK)
     glued = 0
-    for page in index.pages:
+    for page in index.exported:
         keys = ex.glue_from_build(built_book.parent / "jupyter_execute", page)
         for edition in ("student", "instructor"):
             nb = nbformat.read(built_book / "classroom" / edition / index.files[page], 4)

@@ -18,6 +18,10 @@ from pathlib import Path
 import jupytext
 from classroom_markdown import DIRECTIVE_OPEN, HEADING, OPTION, TARGET, Target
 
+# Pages of the book that are not lessons and cannot run away from it: the registry of checks
+# reads the book's own .md files (registry.scan) and displays MyST tables. They keep their
+# place in the book's numbering, but get no notebook; a link to them becomes plain text.
+BOOK_ONLY_PAGES = {"checks"}
 TAG = re.compile(r"\\tag\*?\{(?P<tag>[^}]*)\}")
 TOCTREE = re.compile(r"^(`{3,}|:{3,})\{toctree\}[^\n]*\n(?P<body>.*?)^\1\s*$", re.S | re.M)
 
@@ -62,7 +66,8 @@ def prf_counters(conf: Path) -> dict[str, str]:
 class Book:
     """The pages in reading order, their titles and notebook names, every label."""
 
-    pages: list[str]
+    pages: list[str]  # every notebook page, in reading order (numbering counts them all)
+    exported: list[str] = field(default_factory=list)  # those with a classroom notebook
     files: dict[str, str] = field(default_factory=dict)
     titles: dict[str, str] = field(default_factory=dict)
     targets: dict[str, Target] = field(default_factory=dict)
@@ -90,8 +95,9 @@ def scan(book_dir: Path) -> Book:
         counters[kind] = counters.get(kind, 0) + 1
         return str(counters[kind])
 
-    for n, page in enumerate(pages):
-        book.files[page] = f"{n:02d}-{page}.ipynb"
+    book.exported = [p for p in pages if p not in BOOK_ONLY_PAGES]
+    book.files = {page: f"{n:02d}-{page}.ipynb" for n, page in enumerate(book.exported)}
+    for page in pages:
         nb = jupytext.read(book_dir / f"{page}.md", fmt="md:myst")
         equations = 0
         for cell in nb.cells:

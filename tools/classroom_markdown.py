@@ -71,6 +71,8 @@ def link(ctx: Context, label: str, text: str) -> str:
     target = ctx.targets.get(label)
     if target is None:
         raise ValueError(f"cross-reference to unknown label {label!r} in page {ctx.page!r}")
+    if target.page not in ctx.files:  # a page of the book without a notebook
+        return f"*{text}* (in the book)"
     here = target.page == ctx.page
     if target.kind == "page":
         return f"[{text}]({ctx.files[target.page]})"
@@ -80,8 +82,10 @@ def link(ctx: Context, label: str, text: str) -> str:
 def _page_link(m: re.Match[str], ctx: Context) -> str:
     """A Markdown link to another page of the book becomes a link to its notebook."""
     page = _doc_label(m["page"])
-    if page not in ctx.files:
+    if page not in ctx.titles:
         raise ValueError(f"link to unknown page {m['page']}.md in page {ctx.page!r}")
+    if page not in ctx.files:  # no notebook: the link goes, its text stays
+        return "]"
     return f"]({ctx.files[page]}{m['frag'] or ''})"
 
 
@@ -113,9 +117,11 @@ def convert_roles(text: str, ctx: Context) -> str:
         text_, label = _split(content)
         if role == "doc":
             page = _doc_label(label)
-            if page not in ctx.files:
+            if page not in ctx.titles:
                 raise ValueError(f"{{doc}} to unknown page {page!r} in page {ctx.page!r}")
-            return f"[{text_ or ctx.titles.get(page, page)}]({ctx.files[page]})"
+            if page not in ctx.files:
+                return f"*{text_ or ctx.titles[page]}* (in the book)"
+            return f"[{text_ or ctx.titles[page]}]({ctx.files[page]})"
         if role == "eq":
             target = ctx.targets.get(label)
             return link(ctx, label, text_ or (target.title if target else label))
@@ -177,6 +183,10 @@ def convert_markdown(text: str, ctx: Context) -> str:
             i += 1
             continue
         if stripped.startswith("% ") or stripped == "%" or stripped == "+++":
+            i += 1
+            continue
+        if line.startswith(": ") and out and out[-1].strip() and i > 0:  # a definition list
+            out[-1] = f"**{out[-1].strip()}**: {line[2:].strip()}"
             i += 1
             continue
         labelled = DMATH_LABEL.match(line)

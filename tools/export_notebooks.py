@@ -141,7 +141,7 @@ def export_page(
         return joined if role in {"cite:t", "cite:ts"} else f"\\[{joined}\\]"
 
     ctx = Context(page, book.files, book.titles, book.targets, glued, cite,
-                  book.exercise_numbers, book.pages[1:])
+                  book.exercise_numbers, book.exported[1:])
     nb = jupytext.read(book_dir / f"{page}.md", fmt="md:myst")
     cells: list[nbformat.NotebookNode] = []
     in_solution, first_glue = False, [True]
@@ -231,7 +231,7 @@ def export(book_dir: Path, out_dir: Path, *, run: bool = False, glue_from: Path 
     """Write out_dir/<edition>/NN-page.ipynb for every notebook page; return the files."""
     book = scan(book_dir)
     written = []
-    for page in pages if pages is not None else book.pages:
+    for page in pages if pages is not None else book.exported:
         glue: dict[str, str] | None = None
         if glue_from is not None:
             glue = glue_from_build(glue_from, page)
