@@ -295,11 +295,11 @@ def markdown(checks: list[Check]) -> str:
         mutants = "; ".join(dict.fromkeys(c.mutant.replace("|", "\\|") for c in found
                                           if c.mutant)) or "none"
         places = dict.fromkeys(
-            f"[{c.page}]({c.page}.md#{c.anchor})" if c.anchor else f"[{c.page}]({c.page}.md)"
-            for c in found)
+            f"[{c.page}: {c.section}]({c.page}.md#{c.anchor})" if c.anchor
+            else f"[{c.page}]({c.page}.md)" for c in found)
         link = claim
         if claim.startswith("("):
             link = f"{{ref}}`{claim} <eq-{claim.strip('()')}>`"
         rows.append(f"| {link} | {'; '.join(kinds) or '**none**'} | {mutants} | "
-                    f"{', '.join(places) or '-'} |")
+                    f"{'; '.join(places) or '-'} |")
     return "\n".join(rows)
