@@ -94,7 +94,7 @@ class Identity:
     mutant : sympy.Expr or None
         A wrong right-hand side, the mistake a reader could make (a changed coefficient, sign,
         exponent or argument); a check worth its name must reject it
-        (:func:`elliptic_pendulum.verify.identity` asserts that it does).
+        (``elliptic_pendulum.verify.identity`` asserts that it does).
     mutant_label : str
         How the verdict names the mutant (Markdown); by default its LaTeX.
     change_of_variable : tuple
@@ -184,7 +184,7 @@ class Identity:
 def identities() -> list[Identity]:
     r"""Return the note's correct statements, in the note's order, each with its mutant.
 
-    The statements themselves live in :mod:`elliptic_pendulum._identities` (this module would
+    The statements themselves live in ``elliptic_pendulum._identities`` (this module would
     otherwise outgrow one screenful per idea).
 
     Examples
