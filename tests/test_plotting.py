@@ -21,11 +21,12 @@ import pytest  # noqa: E402
 import elliptic_pendulum as ep  # noqa: E402
 import elliptic_pendulum.plotting as epp  # noqa: E402
 
-# The book's text column is about 750 CSS pixels wide; a figure of w inches is an SVG of
-# 96 w pixels, scaled down to the column when wider. Text must stay at least 10 px there
-# (the old 7-point legends of a 9-inch figure came out at 8 px).
-COLUMN_PX = 750
-MIN_TEXT_PX = 10.0
+# The book's text column is 672 CSS pixels wide at a 1280-pixel window (measured in
+# Chromium); a figure of w inches is an SVG of 96 w pixels, scaled down to the column when
+# wider. Text must stay at least 11 px there (the old 7-point legends of a 9-inch figure
+# came out at 7 px).
+COLUMN_PX = 672
+MIN_TEXT_PX = 11.0
 
 
 @pytest.fixture(autouse=True)

@@ -2,9 +2,10 @@
 
 A figure is shown scaled to the width of the page's text column, so text drawn at a fixed
 size in points shrinks with a wide figure: a 9-inch phase portrait with 8-point labels ends up
-with legends about 7 pixels high. Sizes here grow with the figure's width instead, so text
-reads at about 13 CSS pixels in a 750-pixel column. They are applied to the axes drawn on,
-never through rcParams: the library changes no global state.
+with legends about 7 pixels high. Sizes here grow with the figure's width instead, so the
+smallest text (labels on curves) reads at 11-12 CSS pixels in the book's 672-pixel column.
+They are applied to the axes drawn on, never through rcParams: the library changes no
+global state.
 """
 
 from __future__ import annotations
@@ -12,8 +13,8 @@ from __future__ import annotations
 from typing import Any
 
 #: Text size in points per inch of figure width, and the smallest size used.
-_POINTS_PER_INCH = 1.25
-_MIN_POINTS = 10.0
+_POINTS_PER_INCH = 1.6
+_MIN_POINTS = 11.0
 
 
 def new_axes(ax: Any = None, figsize: tuple[float, float] = (6.4, 4.2)) -> Any:
@@ -34,7 +35,7 @@ def text_size(ax: Any, scale: float = 1.0) -> float:
     >>> matplotlib.use("Agg")
     >>> import matplotlib.pyplot as plt
     >>> fig, ax = plt.subplots(figsize=(12, 4))
-    >>> text_size(ax) > text_size(plt.subplots(figsize=(6, 4))[1]) == 10.0
+    >>> text_size(ax) > text_size(plt.subplots(figsize=(6, 4))[1]) == 11.0
     True
     >>> plt.close("all")
     """

@@ -206,7 +206,8 @@ def tension_plot(theta0: float, omega0: float = 1.0, ax: Any = None) -> Any:
                         label=r"$T < 0$: the rod pushes")
     ax.set_xlim(0, 1)
     low, high = float(ratio.min()), float(ratio.max())
-    ax.set_ylim(min(low, 0.0) - 0.1 * (high - low), high + 0.4 * (high - low))  # room for the legend
+    # Headroom above the curve for the legend.
+    ax.set_ylim(min(low, 0.0) - 0.1 * (high - low), high + 0.4 * (high - low))
     ax.set_xlabel(r"time $t$ / period (released at $t = 0$ from $\theta_0$)")
     ax.set_ylabel(r"$T/(mg)$")
     ax.set_title(rf"$\theta_0 = {math.degrees(theta0):.0f}°$")
