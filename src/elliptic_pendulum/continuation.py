@@ -41,8 +41,9 @@ class ResponseCurve:
 
     Attributes
     ----------
-    orbits : tuple of PeriodicOrbit
-        In the order of the arclength.
+    orbits : tuple
+        The :class:`~elliptic_pendulum.resonance.PeriodicOrbit` objects, in the order of the
+        arclength.
     frequency, amplitude : ndarray
         :math:`\Omega` and the orbits' amplitudes, along the curve.
     stable : ndarray of bool

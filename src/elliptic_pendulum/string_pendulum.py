@@ -157,8 +157,8 @@ def slack_point(theta0: Any, dtheta0: Any = 0.0, omega0: Any = 1.0) -> tuple[flo
 
     Returns
     -------
-    (t, theta) or None
-        The time :math:`t \ge 0` and the angle :math:`\theta(t)` there, or None when
+    tuple of float, or None
+        ``(t, theta)``: the time :math:`t \ge 0` and the angle :math:`\theta(t)` there, or None when
         :func:`string_stays_taut`. ``t = 0`` when the string would have to push at once.
 
     Notes
