@@ -56,8 +56,8 @@ def backbone_frequency(amplitude: Any = None, omega0: Any = 1.0, *,
     omega0 : float, optional
         :math:`\sqrt{g/\ell}`, positive; default 1.
     bottom_speed : float or array_like, optional
-        Keyword-only, instead of ``amplitude``: the speed :math:`|\theta'|` at the bottom of a rotation,
-        :math:`v > 2\omega_0`; the frequency is that of one full turn.
+        Keyword-only, instead of ``amplitude``: the speed :math:`|\theta'|` at the bottom of a
+        rotation, :math:`v > 2\omega_0`; the frequency is that of one full turn.
 
     Returns
     -------
