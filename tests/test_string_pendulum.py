@@ -43,6 +43,8 @@ STATES = [  # (theta0, dtheta0, omega0): swings above 90 degrees started at vari
     (0.0, 1.999, 1.0),  # a swing to 175 degrees
     (0.0, 2.0, 1.0), (0.5, -2.0 * math.cos(0.25), 1.0),  # the separatrix
     (0.0, 2.1, 1.0), (0.0, -2.2, 1.0), (7.0, 1.4, 0.7),  # rotations slower than sqrt(5) w0
+    (-7.0, -1.4, 0.7), (20.0, -1.9, 1.0),  # ... turning the other way, some turns from 0
+    (2 * math.pi + 1.0, 1.2, 1.0),  # a swing about the bottom one turn up
 ]
 
 
