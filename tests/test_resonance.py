@@ -215,6 +215,11 @@ def test_jumps_land_where_a_sweep_across_the_fold_lands(fast_curve):
         assert abs(amplitude - after) < 0.02
 
 
+def test_orbits_compare_by_parameters_and_state():
+    assert periodic_orbit(0.8, 0.01, 0.1) == periodic_orbit(0.8, 0.01, 0.1)
+    assert periodic_orbit(0.8, 0.01, 0.1) != periodic_orbit(0.8, 0.02, 0.1)
+
+
 def test_periodic_orbit_refuses_bad_input():
     with pytest.raises(ValueError, match="frequency"):
         periodic_orbit(0.0, 0.1, 0.1)

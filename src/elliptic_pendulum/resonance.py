@@ -29,7 +29,7 @@ and unstable branches over it; the long-run check is an independent solve_ivp fr
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
@@ -168,8 +168,9 @@ class PeriodicOrbit:
     omega0: float
     state: tuple[float, float]
     amplitude: float
-    multipliers: np.ndarray
-    monodromy: np.ndarray
+    # Arrays take no part in ==: the orbit is identified by its parameters and state.
+    multipliers: np.ndarray = field(compare=False)
+    monodromy: np.ndarray = field(compare=False)
 
     @property
     def stable(self) -> bool:
