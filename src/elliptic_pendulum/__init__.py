@@ -8,6 +8,13 @@ The public API (re-exports only; see each module for the mathematics):
 <Regime.LIBRATION: 'II'>
 """
 
+from .approximations import (
+    agm_ratio,
+    kidd_fogg_ratio,
+    lima_arun_ratio,
+    log_ratio,
+    ratio_approximations,
+)
 from .continuation import ResponseCurve, response_curve
 from .elliptic import (
                        am,
@@ -36,5 +43,6 @@ __all__ = [
     "FreeFlight", "PeriodicOrbit", "ResponseCurve", "backbone_frequency", "duffing_backbone",
     "fourier_coefficients", "free_flight", "nome", "period_series", "period_series_coefficients",
     "periodic_orbit", "response_curve", "slack_point", "string_stays_taut",
+    "agm_ratio", "kidd_fogg_ratio", "lima_arun_ratio", "log_ratio", "ratio_approximations",
 ]
 __version__ = "0.1.0"
