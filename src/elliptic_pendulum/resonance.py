@@ -1,0 +1,304 @@
+r"""Toward nonlinear resonance: the backbone curve and the periodic orbits of the driven pendulum.
+
+For the chapter "toward nonlinear resonance" (beyond the note, which ends by pointing there).
+
+* The backbone: the angular frequency :math:`2\pi/P` of free motion against its size.
+  For swings of amplitude :math:`A \in [0, \pi)`, :math:`\omega(A) = \omega_0/R(A)
+  = \pi\omega_0 / (2K_1(\sin(A/2)))`; for rotations, parametrized by the speed v at the bottom
+  (:math:`v > 2\omega_0`), :math:`\omega = \pi v / (2K_1(2\omega_0/v))`, the rate of one full turn.
+  The weakly nonlinear (Duffing) approximation is :math:`\omega_0(1 - A^2/16)`.
+* The damped, driven pendulum
+
+  .. math:: \theta'' + 2\zeta\omega_0\theta' + \omega_0^2\sin\theta = F\cos\Omega t
+
+  has periodic orbits of the forcing period :math:`2\pi/\Omega`. :func:`periodic_orbit` finds one
+  by shooting: Newton's method (:func:`scipy.optimize.root`, with the exact Jacobian) on the
+  Poincare map :math:`P(y_0) = y(2\pi/\Omega)`, integrated by :func:`scipy.integrate.solve_ivp`
+  together with its variational equations. The monodromy matrix :math:`M = \partial P/\partial
+  y_0` gives the Floquet multipliers; the orbit is stable when both lie inside the unit circle.
+  Their product is :math:`\det M = e^{-2\zeta\omega_0 \cdot 2\pi/\Omega}` (Liouville).
+
+The integration runs in the forcing phase :math:`\tau = \Omega t \in [0, 2\pi]`, so the
+sensitivity to :math:`\Omega` (which :mod:`.continuation` needs) comes out of the same run.
+
+Design note for the chapter: :func:`backbone_frequency` against :func:`duffing_backbone` is one
+figure; :func:`~elliptic_pendulum.continuation.response_curve` draws the response with its stable
+and unstable branches over it; the long-run check is an independent solve_ivp from rest.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+from scipy import integrate, optimize
+
+from ._validation import positive_scalar, real_array, real_scalar, scalar_or_array
+from .elliptic import complete_integral
+from .period import period
+
+__all__ = ["PeriodicOrbit", "backbone_frequency", "duffing_backbone", "periodic_orbit"]
+
+
+def backbone_frequency(amplitude: Any = None, omega0: Any = 1.0, *,
+                       bottom_speed: Any = None) -> Any:
+    r"""Angular frequency :math:`2\pi/P` of free motion: swings by amplitude, rotations by speed.
+
+    .. math:: \omega(A) = \frac{\pi\,\omega_0}{2K_1(\sin(A/2))}, \qquad
+              \omega(v) = \frac{\pi v}{2K_1(2\omega_0/v)}
+
+    Parameters
+    ----------
+    amplitude : float or array_like, optional
+        Amplitude A of a swing, radians, :math:`0 \le A < \pi`.
+    omega0 : float, optional
+        :math:`\sqrt{g/\ell}`, positive; default 1.
+    bottom_speed : float or array_like, optional
+        Keyword-only, instead of ``amplitude``: the speed :math:`|\theta'|` at the bottom of a
+        rotation, :math:`v > 2\omega_0`; the frequency is that of one full turn.
+
+    Returns
+    -------
+    float or ndarray
+        :math:`\omega`, falling from :math:`\omega_0` at A = 0 to 0 at the separatrix, and rising
+        from 0 to :math:`\approx v` on the rotation side.
+
+    Raises
+    ------
+    ValueError
+        If neither or both of ``amplitude`` and ``bottom_speed`` are given, or one is out of range.
+
+    Examples
+    --------
+    Small swings keep :math:`\omega_0`; a swing of 90 degrees is 15% slower; fast rotations
+    turn at about their speed:
+
+    >>> backbone_frequency(0.0, omega0=2.0)
+    2.0
+    >>> round(backbone_frequency(math.pi / 2), 4)
+    0.8472
+    >>> round(backbone_frequency(bottom_speed=100.0) / 100, 4)
+    0.9999
+    """
+    omega0 = positive_scalar(omega0, "omega0")
+    if (amplitude is None) == (bottom_speed is None):
+        raise ValueError("give exactly one of amplitude (a swing) and bottom_speed (a rotation)")
+    if amplitude is not None:
+        # period() checks 0 <= amplitude < pi and names theta0; say "amplitude" instead.
+        a = real_array(amplitude, "amplitude")
+        if np.any((a < 0) | (a >= math.pi)):
+            raise ValueError(f"amplitude must lie in [0, pi) (a swing); got {a.tolist()!r}")
+        return scalar_or_array(2 * math.pi / np.asarray(period(a, omega0)), a)
+    v = real_array(bottom_speed, "bottom_speed")
+    if np.any(np.abs(v) <= 2 * omega0):
+        raise ValueError("bottom_speed must exceed 2 * omega0 in size (a rotation); "
+                         f"got {v.tolist()!r}")
+    speed = np.abs(v)
+    # gamma = 2 w0 / v and its complement sqrt((v - 2 w0)(v + 2 w0)) / v, free of cancellation.
+    gamma = 2 * omega0 / speed
+    gamma_c = np.sqrt((speed - 2 * omega0) * (speed + 2 * omega0)) / speed
+    return scalar_or_array(math.pi * speed / (2 * np.asarray(complete_integral(gamma, kc=gamma_c))),
+                           v)
+
+
+def duffing_backbone(amplitude: Any, omega0: Any = 1.0) -> Any:
+    r"""Return the weakly nonlinear (Duffing) backbone, from sin(theta) ~ theta - theta^3/6.
+
+    .. math:: \omega(A) \approx \omega_0\left(1 - \frac{A^2}{16}\right)
+
+    Parameters
+    ----------
+    amplitude : float or array_like
+        Amplitude A, radians, :math:`A \ge 0`.
+    omega0 : float, optional
+        :math:`\sqrt{g/\ell}`, positive; default 1.
+
+    Returns
+    -------
+    float or ndarray
+        The approximate frequency (negative beyond A = 4, where it means nothing).
+
+    Notes
+    -----
+    Lindstedt-Poincare (or harmonic balance) on :math:`\theta'' + \omega_0^2(\theta - \theta^3/6)
+    = 0`; it agrees with :func:`backbone_frequency` to :math:`O(A^4)`, as
+    :math:`1/R = 1 - A^2/16 + A^4/3072 + \dots`.
+
+    Examples
+    --------
+    >>> duffing_backbone(1.0)
+    0.9375
+
+    The two differ by :math:`A^4/3072` at small amplitude:
+
+    >>> difference = backbone_frequency(0.1) - duffing_backbone(0.1)
+    >>> abs(difference / (0.1**4 / 3072) - 1) < 1e-3
+    True
+    """
+    a = real_array(amplitude, "amplitude")
+    if np.any(a < 0):
+        raise ValueError(f"amplitude must be >= 0; got {a.tolist()!r}")
+    omega0 = positive_scalar(omega0, "omega0")
+    return scalar_or_array(omega0 * (1 - a * a / 16), a)
+
+
+@dataclass(frozen=True)
+class PeriodicOrbit:
+    r"""A periodic orbit of the driven pendulum, of the forcing's period (:func:`periodic_orbit`).
+
+    Attributes
+    ----------
+    frequency, forcing, damping, omega0 : float
+        :math:`\Omega, F, \zeta, \omega_0`.
+    state : tuple of float
+        :math:`(\theta, \theta')` at t = 0, where the forcing :math:`F\cos\Omega t` peaks.
+    amplitude : float
+        Half the peak-to-peak swing, :math:`(\max\theta - \min\theta)/2`, over one period.
+    multipliers : ndarray
+        The two Floquet multipliers (eigenvalues of the monodromy matrix), complex.
+    monodromy : ndarray
+        The 2x2 matrix :math:`\partial P/\partial y_0`.
+    """
+
+    frequency: float
+    forcing: float
+    damping: float
+    omega0: float
+    state: tuple[float, float]
+    amplitude: float
+    # Arrays take no part in ==: the orbit is identified by its parameters and state.
+    multipliers: np.ndarray = field(compare=False)
+    monodromy: np.ndarray = field(compare=False)
+
+    @property
+    def stable(self) -> bool:
+        """Return whether both Floquet multipliers lie inside the unit circle."""
+        return bool(np.max(np.abs(self.multipliers)) < 1.0)
+
+
+_RTOL, _ATOL = 1e-11, 1e-12
+
+
+def _flow(y0, frequency, forcing, damping, omega0, dense=False):
+    """Integrate state, monodromy and d/dOmega over one forcing period, in tau = Omega t."""
+    w2, c = omega0 * omega0, 2.0 * damping * omega0
+    inv = 1.0 / frequency
+
+    def rhs(tau, y):
+        th, v, a, b, cc, d, zt, zv = y
+        f0 = v * inv
+        f1 = (forcing * math.cos(tau) - c * v - w2 * math.sin(th)) * inv
+        j10 = -w2 * math.cos(th) * inv
+        j11 = -c * inv
+        # Phi' = J Phi (rows (a, b), (cc, d)); z' = J z + df/dOmega with df/dOmega = -f/Omega.
+        return [f0, f1, inv * cc, inv * d, j10 * a + j11 * cc, j10 * b + j11 * d,
+                inv * zv - f0 * inv, j10 * zt + j11 * zv - f1 * inv]
+
+    start = [y0[0], y0[1], 1.0, 0.0, 0.0, 1.0, 0.0, 0.0]
+    sol = integrate.solve_ivp(rhs, (0.0, 2 * math.pi), start, method="DOP853", rtol=_RTOL,
+                              atol=_ATOL, dense_output=dense)
+    if not sol.success:  # pragma: no cover - DOP853 on a smooth bounded field
+        raise RuntimeError(f"solve_ivp failed: {sol.message}")
+    end = sol.y[:, -1]
+    return end[:2], end[2:6].reshape(2, 2), end[6:], sol
+
+
+def _amplitude(sol) -> float:
+    """Half of max - min of theta over the period, the extrema refined on the dense output."""
+    step = 2 * math.pi / 256
+
+    def theta(tau):  # the orbit is periodic: read tau modulo the period
+        return float(sol.sol(tau % (2 * math.pi))[0])
+
+    samples = sol.sol(np.arange(256) * step)[0]
+    extremes = []
+    for sign, index in ((1.0, int(np.argmax(samples))), (-1.0, int(np.argmin(samples)))):
+        centre = index * step
+        found = optimize.minimize_scalar(lambda s, sg=sign: -sg * theta(s),
+                                         bounds=(centre - step, centre + step), method="bounded",
+                                         options={"xatol": 1e-10})
+        extremes.append(sign * max(sign * samples[index], -found.fun))
+    return float(0.5 * (extremes[0] - extremes[1]))
+
+
+def _linear_guess(frequency, forcing, damping, omega0):
+    """Return the state at t = 0 of the linear response theta = A cos(Omega t - phi)."""
+    response = forcing / complex(omega0**2 - frequency**2, 2 * damping * omega0 * frequency)
+    return (response.real, -frequency * response.imag)
+
+
+def _orbit(state, frequency, forcing, damping, omega0, flow=None) -> PeriodicOrbit:
+    """Build the PeriodicOrbit through a converged state (``flow``: its dense _flow, if known)."""
+    _, monodromy, _, sol = flow or _flow(state, frequency, forcing, damping, omega0, dense=True)
+    return PeriodicOrbit(frequency, forcing, damping, omega0, (float(state[0]), float(state[1])),
+                         _amplitude(sol), np.linalg.eigvals(monodromy), monodromy)
+
+
+def periodic_orbit(frequency: Any, forcing: Any, damping: Any, omega0: Any = 1.0, *,
+                   guess: Any = None, tol: float = 1e-10) -> PeriodicOrbit:
+    r"""Find a periodic orbit of the damped, driven pendulum by shooting.
+
+    .. math:: \theta'' + 2\zeta\omega_0\theta' + \omega_0^2\sin\theta = F\cos\Omega t, \qquad
+              P(y_0) = y_0, \quad P = \text{flow over } 2\pi/\Omega
+
+    Parameters
+    ----------
+    frequency : float
+        Forcing frequency :math:`\Omega > 0`.
+    forcing : float
+        Forcing amplitude F (per unit moment of inertia), real.
+    damping : float
+        Damping ratio :math:`\zeta > 0`.
+    omega0 : float, optional
+        :math:`\sqrt{g/\ell}`, positive; default 1.
+    guess : (float, float), optional
+        Starting state :math:`(\theta, \theta')` at t = 0 for Newton; default: the linear response.
+    tol : float, optional
+        Tolerance on :math:`|P(y_0) - y_0|`; default 1e-10.
+
+    Returns
+    -------
+    PeriodicOrbit
+        With its amplitude, Floquet multipliers and stability.
+
+    Raises
+    ------
+    ValueError
+        For a parameter out of range.
+    RuntimeError
+        If Newton's method does not converge from the guess.
+
+    Examples
+    --------
+    Weak forcing gives the linear response
+    :math:`F/|\omega_0^2 - \Omega^2 + 2i\zeta\omega_0\Omega|`, and the multipliers multiply to
+    :math:`e^{-2\zeta\omega_0 \cdot 2\pi/\Omega}` (Liouville):
+
+    >>> orbit = periodic_orbit(0.8, 1e-4, 0.1)
+    >>> linear = 1e-4 / abs(complex(1 - 0.8**2, 2 * 0.1 * 0.8))
+    >>> bool(abs(orbit.amplitude / linear - 1) < 1e-6), orbit.stable
+    (True, True)
+    >>> bool(abs(np.prod(orbit.multipliers) - np.exp(-0.2 * 2 * np.pi / 0.8)) < 1e-9)
+    True
+    """
+    frequency = positive_scalar(frequency, "frequency")
+    forcing = real_scalar(forcing, "forcing")
+    damping = positive_scalar(damping, "damping")
+    omega0 = positive_scalar(omega0, "omega0")
+    tol = positive_scalar(tol, "tol")
+    start = (_linear_guess(frequency, forcing, damping, omega0) if guess is None
+             else real_array(guess, "guess"))
+    if np.shape(start) != (2,):
+        raise ValueError("guess must be one state (theta, theta')")
+
+    def residual(y):
+        end, monodromy, _, _ = _flow(y, frequency, forcing, damping, omega0)
+        return end - y, monodromy - np.eye(2)
+
+    found = optimize.root(residual, np.asarray(start, float), jac=True, method="hybr",
+                          options={"xtol": 1e-13})
+    if np.max(np.abs(residual(found.x)[0])) > tol:
+        raise RuntimeError(f"shooting did not converge from {tuple(start)}: {found.message}")
+    return _orbit(found.x, frequency, forcing, damping, omega0)
