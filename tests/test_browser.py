@@ -298,17 +298,23 @@ def look_at(browser: Browser, html_dir: Path, width: int) -> Iterator[tuple[str,
 
 
 @pytest.fixture(scope="module")
-def survey(built_book: Path, built_docs: Path, chromium: str, tmp_path_factory) -> dict:
+def survey(built_book: Path, built_docs: Path, chromium: str, tmp_path_factory, request) -> dict:
     """(site, width) -> {page: what the browser saw}, for every page of both builds."""
     browser = Browser(chromium, tmp_path_factory.mktemp("chromium-profile"))
     try:
-        return {
+        found = {
             (site, width): dict(look_at(browser, html, width))
             for site, html in (("book", built_book), ("docs", built_docs))
             for width in WIDTHS
         }
     finally:
         browser.close()
+    # Say where the screenshots are: the builds of a test session live in a temporary folder.
+    reporter = request.config.pluginmanager.get_plugin("terminalreporter")
+    if reporter is not None:
+        for html in (built_book, built_docs):
+            reporter.write_line(f"\nscreenshots: {html / '_screenshots'}")
+    return found
 
 
 def each(survey: dict, key: str, sites=("book", "docs"), widths=WIDTHS) -> dict:
