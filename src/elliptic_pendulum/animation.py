@@ -65,7 +65,7 @@ def animate(motions: Motion | Sequence[Motion], duration: Any = None, frames: in
 
     Parameters
     ----------
-    motions : Motion or sequence of Motion
+    motions : Motion or list of Motion
         From :func:`~elliptic_pendulum.motion.solve`; up to six, all scalar.
     duration : float, optional
         :math:`t_{\mathrm{end}}`; default the longest finite period among the motions (so
