@@ -20,6 +20,7 @@ from elliptic_pendulum.resonance import (
     duffing_backbone,
     periodic_orbit,
 )
+from elliptic_pendulum.sweep import settle, sweep
 
 # A curve that folds under light damping: the peak near 1.86 rad, where the exact backbone and the
 # Duffing one differ by 2e-3, a hundred times the peak's distance from the backbone.
@@ -213,6 +214,51 @@ def test_jumps_land_where_a_sweep_across_the_fold_lands(fast_curve):
         # ... and step the frequency past the fold: the run ends on the other branch
         _, amplitude = long_run(omega + inward, orbit.state, 150)
         assert abs(amplitude - after) < 0.02
+
+
+def test_settle_reaches_the_shooting_orbit():
+    # sweep.settle shares no code with the shooting: two routes to one steady state
+    orbit = periodic_orbit(1.1, F_FAST, ZETA_FAST)
+    state, amplitude = settle(1.1, F_FAST, ZETA_FAST, periods=100)
+    assert np.max(np.abs(np.subtract(state, orbit.state))) < 1e-9
+    assert abs(amplitude - orbit.amplitude) < 1e-7  # 4001 samples of the last period
+    # and too short a run is still in its transient: the comparison can fail
+    short, _ = settle(1.1, F_FAST, ZETA_FAST, periods=3)
+    assert np.max(np.abs(np.subtract(short, orbit.state))) > 1e-3
+
+
+def test_a_slow_sweep_jumps_at_the_folds_of_the_curve(fast_curve):
+    jumps = {("up" if after > before else "down"): (omega, before, after)
+             for omega, before, after in fast_curve.jumps()}
+    # up through the bistable range from rest: on the lower branch until its fold, then up
+    omega, before, after = jumps["up"]
+    grid = np.round(omega + np.arange(-3, 3) * 0.01 + 0.005, 4)  # no point on the fold itself
+    amplitudes = sweep(grid, F_FAST, ZETA_FAST, periods=60)
+    below, above = grid < omega, grid > omega
+    middle = 0.5 * (before + after)
+    assert np.all(amplitudes[below] < before + 1e-3) and np.all(amplitudes[above] > middle)
+    assert abs(amplitudes[above][0] - after) < 0.05  # the first step past the fold lands there
+    # down from the upper branch: on it until its fold, then down
+    omega, before, after = jumps["down"]
+    grid = np.round(omega + np.arange(2, -4, -1) * 0.01 + 0.005, 4)
+    upper = periodic_orbit(grid[0], F_FAST, ZETA_FAST, guess=max(
+        (o for o in fast_curve.orbits if o.stable), key=lambda o: o.amplitude).state)
+    amplitudes = sweep(grid, F_FAST, ZETA_FAST, state=upper.state, periods=60)
+    below, above = grid < omega, grid > omega
+    middle = 0.5 * (before + after)
+    assert np.all(amplitudes[above] > middle) and np.all(amplitudes[below] < middle)
+    assert abs(amplitudes[below][0] - after) < 0.05
+
+
+def test_sweep_refuses_bad_input():
+    with pytest.raises(ValueError, match="frequencies"):
+        sweep([], 0.1, 0.1)
+    with pytest.raises(ValueError, match="frequencies"):
+        sweep([1.0, -1.0], 0.1, 0.1)
+    with pytest.raises(ValueError, match="periods"):
+        settle(1.0, 0.1, 0.1, periods=0)
+    with pytest.raises(ValueError, match="state"):
+        settle(1.0, 0.1, 0.1, state=(1.0, 2.0, 3.0))
 
 
 def test_orbits_compare_by_parameters_and_state():

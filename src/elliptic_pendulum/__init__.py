@@ -34,6 +34,7 @@ from .regimes import Regime
 from .resonance import PeriodicOrbit, backbone_frequency, duffing_backbone, periodic_orbit
 from .series import fourier_coefficients, nome, period_series, period_series_coefficients
 from .string_pendulum import FreeFlight, free_flight, slack_point, string_stays_taut
+from .sweep import settle, sweep
 
 __all__ = [
     "Motion", "Pendulum", "Regime", "agm_period", "am", "cn", "complete_integral",
@@ -44,5 +45,6 @@ __all__ = [
     "fourier_coefficients", "free_flight", "nome", "period_series", "period_series_coefficients",
     "periodic_orbit", "response_curve", "slack_point", "string_stays_taut",
     "agm_ratio", "kidd_fogg_ratio", "lima_arun_ratio", "log_ratio", "ratio_approximations",
+    "settle", "sweep",
 ]
 __version__ = "0.1.0"

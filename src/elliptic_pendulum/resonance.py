@@ -23,7 +23,8 @@ sensitivity to :math:`\Omega` (which :mod:`.continuation` needs) comes out of th
 
 Design note for the chapter: :func:`backbone_frequency` against :func:`duffing_backbone` is one
 figure; :func:`~elliptic_pendulum.continuation.response_curve` draws the response with its stable
-and unstable branches over it; the long-run check is an independent solve_ivp from rest.
+and unstable branches over it; the long-run check is :func:`~elliptic_pendulum.sweep.settle`
+(an independent solve_ivp from rest), and :func:`~elliptic_pendulum.sweep.sweep` shows the jumps.
 """
 
 from __future__ import annotations
