@@ -57,6 +57,35 @@ document.querySelectorAll(".solution").length
 """
 
 
+# After the print layout is in place: a formula or table wider than its column is scaled
+# down to fit (CSS zoom) instead of being cut at the margin; MathJax 3 does not break lines.
+FIT = """
+(() => {
+  let fitted = 0;
+  const inner = el => {
+    const s = getComputedStyle(el);
+    return el.clientWidth - parseFloat(s.paddingLeft) - parseFloat(s.paddingRight);
+  };
+  for (const el of document.querySelectorAll("mjx-container, table")) {
+    // A box may already scroll (book/_static/reader.css): its content is scrollWidth wide.
+    const need = Math.max(el.scrollWidth, el.getBoundingClientRect().width);
+    const block = el.tagName === "TABLE" || el.getAttribute("display") === "true"
+      ? el.parentElement : el.closest("p, li, td, th, dd, figcaption, div") || el.parentElement;
+    const room = inner(block);
+    if (room > 0 && need > room + 1) {
+      el.style.zoom = (0.99 * room / need).toFixed(3);
+      fitted++;
+    }
+  }
+  return fitted;
+})()
+"""
+PAPER = {"paperWidth": 8.27, "paperHeight": 11.69, "marginTop": 0.6, "marginBottom": 0.6,
+         "marginLeft": 0.6, "marginRight": 0.6}  # A4, in inches
+# The width of the printed column in CSS pixels (96 per inch): the page is laid out at it.
+COLUMN = int((PAPER["paperWidth"] - PAPER["marginLeft"] - PAPER["marginRight"]) * 96)
+
+
 def find_chromium() -> str:
     """The Chromium to use: $CHROMIUM, or Debian's chromium on PATH."""
     for name in (os.environ.get("CHROMIUM"), "chromium", "chromium-browser", "google-chrome"):
@@ -127,6 +156,10 @@ def print_pdf(page: Path, pdf: Path, open_solutions: bool = False, timeout: floa
         tools = DevTools(url)
         try:
             tools.call("Page.enable")
+            # Lay the page out as it will be printed, so that FIT measures the real column.
+            tools.call("Emulation.setEmulatedMedia", media="print")
+            tools.call("Emulation.setDeviceMetricsOverride", width=COLUMN, height=1100,
+                       deviceScaleFactor=1, mobile=False)
             tools.call("Page.navigate", url=page.resolve().as_uri())
             # The document must exist before READY can look at it.
             tools.evaluate("new Promise(r => document.readyState === 'complete' ? r() :"
@@ -138,13 +171,12 @@ def print_pdf(page: Path, pdf: Path, open_solutions: bool = False, timeout: floa
                 raise RuntimeError(f"{page} has {math} formulas but MathJax typeset none")
             solutions = tools.evaluate(OPEN_SOLUTIONS) if open_solutions else 0
             images = tools.evaluate("document.images.length")
+            fitted = tools.evaluate(FIT)
             errors = tools.evaluate("document.querySelectorAll('mjx-merror').length")
             if errors:
                 raise RuntimeError(f"MathJax could not typeset {errors} formulas in {page}")
             result = tools.call("Page.printToPDF", timeout=timeout, printBackground=True,
-                                paperWidth=8.27, paperHeight=11.69,  # A4, in inches
-                                marginTop=0.6, marginBottom=0.6, marginLeft=0.6,
-                                marginRight=0.6, displayHeaderFooter=True,
+                                **PAPER, displayHeaderFooter=True,
                                 headerTemplate="<span></span>",
                                 footerTemplate='<div style="font-size:8px;width:100%;'
                                 'text-align:center"><span class="pageNumber"></span></div>')
@@ -156,7 +188,7 @@ def print_pdf(page: Path, pdf: Path, open_solutions: bool = False, timeout: floa
         shutil.rmtree(profile, ignore_errors=True)
     pdf.parent.mkdir(parents=True, exist_ok=True)
     pdf.write_bytes(base64.b64decode(result["data"]))
-    return {"formulas": formulas, "solutions": solutions, "images": images}
+    return {"formulas": formulas, "solutions": solutions, "images": images, "fitted": fitted}
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -168,8 +200,8 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     start = time.perf_counter()
     seen = print_pdf(args.page, args.pdf, args.open_solutions)
-    print(f"wrote {args.pdf} ({seen['formulas']} formulas, {seen['solutions']} solutions "
-          f"opened, {time.perf_counter() - start:.1f} s)")
+    print(f"wrote {args.pdf} ({seen['formulas']} formulas, {seen['fitted']} scaled to fit, "
+          f"{seen['solutions']} solutions opened, {time.perf_counter() - start:.1f} s)")
     return 0
 
 
