@@ -126,7 +126,11 @@ def export_page(
             return f"`{key}`"
         if key not in glue:  # an error only if the text is kept (a student drops solutions)
             return f"{SENTINEL}MISSING {key}{SENTINEL}"
-        return format_glue(glue[key], fmt)
+        try:
+            return format_glue(glue[key], fmt)
+        except ValueError as err:  # myst-nb refuses it too ("Failed to format text/plain")
+            raise ValueError(f"page {page!r}: glued {key!r} = {glue[key]!r} does not take "
+                             f"the format {fmt!r} ({err}); glue a Python float") from err
 
     def cite(role: str, keys: list[str]) -> str:
         links = []
