@@ -6,6 +6,7 @@ drawn, the instructor's copy has every solution open and the student's none.
 
 from __future__ import annotations
 
+import importlib.util
 import os
 import re
 import shutil
@@ -32,14 +33,14 @@ def _need(what: str, ok: bool) -> None:
 @pytest.fixture(scope="session")
 def pdfs(tmp_path_factory: pytest.TempPathFactory, docs_build: Build) -> dict:
     _need("chromium", shutil.which("chromium") is not None or "CHROMIUM" in os.environ)
-    _need("pypdf", __import__("importlib").util.find_spec("pypdf") is not None)
+    _need("pypdf", importlib.util.find_spec("pypdf") is not None)
     if docs_build.returncode != 0:
         pytest.fail("the docs did not build (the book links to them)", pytrace=False)
     out = tmp_path_factory.mktemp("pdf")
-    os.environ["ELLIPTIC_PENDULUM_DOCS_HTML"] = str(docs_build.outdir)
     # One execution cache for the session: test_student_book builds the same student pages.
     cache = tmp_path_factory.getbasetemp() / "jupyter-cache"
-    report = build_pdf.build(BOOK, out, cache)
+    report = build_pdf.build(BOOK, out, cache,
+                             {"ELLIPTIC_PENDULUM_DOCS_HTML": str(docs_build.outdir)})
     print({k: {n: round(v, 1) if isinstance(v, float) else v for n, v in r.items()}
            for k, r in report.items()})
     from pypdf import PdfReader

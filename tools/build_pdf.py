@@ -26,10 +26,13 @@ from print_pdf import print_pdf
 EDITIONS = {"book": (".", [], True), "book-student": ("student", ["-D", "hide_solutions=1"], False)}
 
 
-def build(book: Path, build_dir: Path, cache: Path | None = None) -> dict[str, dict]:
+def build(book: Path, build_dir: Path, cache: Path | None = None,
+          env: dict[str, str] | None = None) -> dict[str, dict]:
     """Both single-page builds and both PDFs; return, per PDF, the seconds of each step
-    and what the printer saw (formulas typeset, solutions opened, images)."""
-    env = dict(os.environ, JUPYTER_PLATFORM_DIRS="1")
+    and what the printer saw (formulas typeset, solutions opened, images).
+
+    env: extra environment variables for sphinx-build (e.g. where the docs build is)."""
+    env = dict(os.environ, JUPYTER_PLATFORM_DIRS="1", **(env or {}))
     # The notebook kernel must see this interpreter's packages.
     env["PATH"] = str(Path(sys.executable).parent) + os.pathsep + env.get("PATH", "")
     report: dict[str, dict] = {}
