@@ -9,7 +9,9 @@ select a backend.
 Figures of the note: the pendulum (Fig. 1, :func:`pendulum_sketch`) and the
 phase portrait of (9) (Fig. 2, :func:`phase_portrait`). Figures a teacher asks for beyond
 the note (:func:`period_ratio_plot`, :func:`tension_plot`, :func:`extension_plot`) live in
-``elliptic_pendulum.plotting_extra`` and are importable from here.
+``elliptic_pendulum.plotting_extra``, those of the chapters beyond the note in
+``elliptic_pendulum.plotting_beyond`` and ``elliptic_pendulum.plotting_resonance``; all are
+importable from here.
 """
 
 from __future__ import annotations
@@ -23,6 +25,12 @@ import numpy as np
 from ._plotbase import new_axes, readable, text_size
 from .motion import Motion, solve
 from .numerics import integrate
+from .plotting_beyond import (
+    approximation_error_plot,
+    harmonics_plot,
+    string_flight_plot,
+    string_phase_plane,
+)
 from .plotting_extra import (
     extension_plot,
     period_ratio_plot,
@@ -32,10 +40,14 @@ from .plotting_extra import (
     plot_jacobi,
     tension_plot,
 )
+from .plotting_resonance import backbone_plot, response_plot, sweep_plot
 
 __all__ = ["pendulum_sketch", "phase_portrait", "plot_motion", "plot_jacobi",
            "plot_integral", "plot_inverse", "plot_amplitude",
-           "period_ratio_plot", "tension_plot", "extension_plot"]
+           "period_ratio_plot", "tension_plot", "extension_plot",
+           # the chapters beyond the note
+           "approximation_error_plot", "harmonics_plot", "string_flight_plot",
+           "string_phase_plane", "backbone_plot", "response_plot", "sweep_plot"]
 
 _axes = new_axes
 
