@@ -172,9 +172,13 @@ def print_pdf(page: Path, pdf: Path, open_solutions: bool = False, timeout: floa
             solutions = tools.evaluate(OPEN_SOLUTIONS) if open_solutions else 0
             images = tools.evaluate("document.images.length")
             fitted = tools.evaluate(FIT)
-            errors = tools.evaluate("document.querySelectorAll('mjx-merror').length")
+            errors = tools.evaluate(
+                "[...document.querySelectorAll('mjx-merror')].map(e =>"
+                " (e.getAttribute('data-mjx-error') || '') + ' in: ' +"
+                " (e.closest('section') || document.body).id)")
             if errors:
-                raise RuntimeError(f"MathJax could not typeset {errors} formulas in {page}")
+                raise RuntimeError(f"MathJax could not typeset {len(errors)} formulas in "
+                                   f"{page}: {errors[:5]}")
             result = tools.call("Page.printToPDF", timeout=timeout, printBackground=True,
                                 **PAPER, displayHeaderFooter=True,
                                 headerTemplate="<span></span>",
