@@ -10,8 +10,8 @@ Figures of the note: the pendulum (Fig. 1, :func:`pendulum_sketch`) and the
 phase portrait of (9) (Fig. 2, :func:`phase_portrait`). Figures a teacher asks for beyond
 the note (:func:`period_ratio_plot`, :func:`tension_plot`, :func:`extension_plot`) live in
 ``elliptic_pendulum.plotting_extra``, those of the chapters beyond the note in
-``elliptic_pendulum.plotting_beyond`` and ``elliptic_pendulum.plotting_resonance``; all are
-importable from here.
+``elliptic_pendulum.plotting_beyond``, ``plotting_string`` and ``plotting_resonance``; all
+are importable from here.
 """
 
 from __future__ import annotations
@@ -25,12 +25,7 @@ import numpy as np
 from ._plotbase import new_axes, readable, text_size
 from .motion import Motion, solve
 from .numerics import integrate
-from .plotting_beyond import (
-    approximation_error_plot,
-    harmonics_plot,
-    string_flight_plot,
-    string_phase_plane,
-)
+from .plotting_beyond import approximation_error_plot, harmonics_plot
 from .plotting_extra import (
     extension_plot,
     period_ratio_plot,
@@ -41,6 +36,7 @@ from .plotting_extra import (
     tension_plot,
 )
 from .plotting_resonance import backbone_plot, response_plot, sweep_plot
+from .plotting_string import string_flight_plot, string_phase_plane
 
 __all__ = ["pendulum_sketch", "phase_portrait", "plot_motion", "plot_jacobi",
            "plot_integral", "plot_inverse", "plot_amplitude",
