@@ -252,3 +252,30 @@ def test_helpers_return_the_given_axes_and_leave_rcparams(curve):
     assert epp.response_plot(curve, ax=ax) is ax
     assert epp.sweep_plot(curve, ([0.7], [0.3]), ([0.9], [1.0])) is not None
     assert {k: repr(v) for k, v in matplotlib.rcParams.items()} == before
+
+
+# The rule of tests/test_plotting.py: a figure of w inches is an SVG of 96 w px, scaled down to
+# the book's 672-px column when wider; its text must read at 11 px or more there.
+def _displayed_px(text, fig):
+    return text.get_fontsize() * 96 / 72 * min(1.0, 672 / (96 * fig.get_figwidth()))
+
+
+def _texts(ax):
+    texts = [ax.xaxis.label, ax.yaxis.label, ax.title, *ax.get_xticklabels(),
+             *ax.get_yticklabels(), *ax.texts]
+    legend = ax.get_legend()
+    if legend is not None:
+        texts += [*legend.get_texts(), legend.get_title()]
+    return [t for t in texts if t.get_text()]
+
+
+def test_every_text_is_readable_at_display_size_as_the_book_draws_it(curve):
+    figures = [epp.approximation_error_plot(), epp.string_phase_plane(),
+               *epp.harmonics_plot([30, 179]), epp.response_plot(curve),
+               epp.sweep_plot(curve, ([0.7], [0.3]), ([0.9], [1.0]))]
+    for size in ((8, 4.2), (9, 3.8)):            # two panels side by side, as in the book
+        fig, axes = plt.subplots(1, 2, figsize=size)
+        figures += [epp.string_flight_plot(0.0, 1.8, ax=axes[0]), epp.backbone_plot(ax=axes[1])]
+    small = [f"{t.get_text()!r}: {_displayed_px(t, ax.figure):.1f} px"
+             for ax in figures for t in _texts(ax) if _displayed_px(t, ax.figure) < 11.0]
+    assert small == []
