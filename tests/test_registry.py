@@ -115,3 +115,14 @@ def test_no_check_claims_a_wide_range():
     # is "(5)-(7)", the solution (7) of (5) with omega_0 from (6).
     for c in CHECKS:
         assert len(registry.claims_of(c.claim)) <= 3, f"{c.page}.md:{c.line}: {c.claim}"
+
+
+def test_every_check_of_no_numbered_claim_has_a_row_of_its_own():
+    # The second table of book/checks.md: one row per check that names no claim of CLAIMS,
+    # so the chapters beyond the note and the exercises are in the registry too.
+    others = [c for c in CHECKS if not registry.claims_of(c.claim)]
+    table = registry.markdown_other(CHECKS)
+    rows = [r for r in table.splitlines() if r.startswith("| ") and not r.startswith("| check")]
+    assert others and len(rows) == len(others)
+    for page in {"period_in_depth", "rod_or_string", "resonance", "in_motion"}:
+        assert f"{{doc}}`{page}`" in table

@@ -27,7 +27,8 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
-__all__ = ["CLAIMS", "KINDS", "STATUS", "Check", "claims_of", "coverage", "markdown", "scan"]
+__all__ = ["CLAIMS", "KINDS", "STATUS", "Check", "claims_of", "coverage", "markdown",
+           "markdown_other", "scan"]
 
 #: The claims a reader of the note can point at: its 46 numbered equations, the parts of
 #: Proposition 1 and Lemma 2, the table of R(theta_0) and the three crossing angles.
@@ -56,8 +57,8 @@ STATUS: dict[str, tuple[str, str]] = {
     "(20)": ("definition", "the periodic extension f-bar of Lemma 2.2"),
     "(21)": ("definition", "the staircase extension f-hat of Lemma 2.3"),
     "(24)": ("proof in the text only",
-             "every solution of (15) on the real line is G-bar(omega_0 t + c_2): the "
-             "maximal-extension argument and uniqueness for (3)"),
+             "that every solution of (3) with this energy is (25), so its xi is (24): "
+             "uniqueness for (3); the constants xi = +-1 solve (15) but not (3)"),
     "(31)": ("definition", "names H_0, an integral"),
     "(36)": ("definition", "names H_1, an integral"),
     "(40)": ("definition", "names I = arcsin G"),
@@ -303,3 +304,25 @@ def markdown(checks: list[Check]) -> str:
         rows.append(f"| {link} | {'; '.join(kinds) or '**none**'} | {mutants} | "
                     f"{'; '.join(places) or '-'} |")
     return "\n".join(rows)
+
+
+def markdown_other(checks: list[Check]) -> str:
+    """Return the checks of no numbered claim (remarks, exercises, the chapters beyond the note).
+
+    One MyST table per page, in the order of ``checks``: label, kind, mutant rejected, section.
+    """
+    pages: dict[str, list[Check]] = {}
+    for c in checks:
+        if not claims_of(c.claim):
+            pages.setdefault(c.page, []).append(c)
+    out = []
+    for page, found in pages.items():
+        out += [f"### {{doc}}`{page}`", "", "| check | kind | mutant rejected | where |",
+                "|---|---|---|---|"]
+        for c in found:
+            where = f"[{c.section}]({c.page}.md#{c.anchor})" if c.anchor else c.section
+            label = (c.claim or c.name or "(unnamed)").replace("|", "\\|")
+            mutant = c.mutant.replace("|", "\\|") or "none"
+            out.append(f"| {label} | {c.kind} | {mutant} | {where} |")
+        out.append("")
+    return "\n".join(out)
