@@ -166,7 +166,14 @@ def animate(motions: Motion | Sequence[Motion], duration: Any = None, frames: in
     anim = animation.FuncAnimation(fig, draw, frames=frames, interval=interval, blit=False)
     # For the caller and the tests: the frames' times, their artists, and the drawing function.
     anim.frame_times, anim.bobs, anim.points = times, bobs, points  # type: ignore[attr-defined]
-    anim.draw_frame = draw  # type: ignore[attr-defined]
+
+    def draw_frame(j: int) -> list[Any]:
+        # Frames drawn by hand count as rendering: matplotlib's Animation.__del__ warns
+        # ("deleted without rendering anything") while its _draw_was_started is False.
+        anim._draw_was_started = True  # type: ignore[attr-defined]
+        return draw(j)
+
+    anim.draw_frame = draw_frame  # type: ignore[attr-defined]
     return anim
 
 
