@@ -26,56 +26,20 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
-_PI_HI = 3.141592653589793
-_PI_LO = 1.2246467991473532e-16
-_SPLIT = 134217729.0  # 2**27 + 1, Dekker's splitter
+from . import _dd
+from ._dd import PI_HI as _PI_HI
+from ._dd import PI_LO as _PI_LO
+from ._dd import fast_two_sum as _fast_two_sum
+from ._dd import two_prod as _two_prod
+from ._dd import two_sum as _two_sum
 
-
-def _two_sum(a, b):
-    s = a + b
-    bb = s - a
-    return s, (a - (s - bb)) + (b - bb)
-
-
-def _fast_two_sum(a, b):
-    s = a + b
-    return s, b - (s - a)
-
-
-def _two_prod(a, b):
-    p = a * b
-    t = _SPLIT * a
-    ah = t - (t - a)
-    t = _SPLIT * b
-    bh = t - (t - b)
-    al, bl = a - ah, b - bh
-    return p, ((ah * bh - p) + ah * bl + al * bh) + al * bl
-
-
-def _dd_mul(ah, al, bh, bl):
-    p, e = _two_prod(ah, bh)
-    return _fast_two_sum(p, e + (ah * bl + al * bh))
-
-
-def _dd_sqrt(ah, al):
-    x = np.sqrt(ah)
-    p, e = _two_prod(x, x)
-    r = ((ah - p) - e) + al
-    return _fast_two_sum(x, r / (2.0 * x))
-
-
-def _dd_div(ah, al, bh, bl):
-    q = ah / bh
-    p, e = _dd_mul(q, 0.0 * q, bh, bl)
-    s, f = _two_sum(ah, -p)
-    r = s + (f - e + al)
-    return _fast_two_sum(q, r / bh)
+__all__ = ["Constants", "complement", "constants", "core", "evaluate", "quarter_period",
+           "reduce", "sech", "gudermannian", "_PI_HI", "_PI_LO", "_two_prod", "_two_sum"]
 
 
 def _chop(x):
     """Keep the top 26 bits of x, so that n * chop(x) is exact for |n| < 2**26."""
-    t = _SPLIT * x
-    return t - (t - x)
+    return _dd.split(x)[0]
 
 
 class Constants(NamedTuple):
@@ -96,28 +60,35 @@ def _constants(kc: Any, kc_lo: Any = 0.0) -> Constants:
     top = kc == 0  # the separatrix: K = inf; run the AGM on a harmless stand-in
     kc_lo = np.where(top, 0.0, kc_lo)
     kc = np.where(top, 1.0, kc)
-    # Double precision AGM for the Landen recurrence. Stop as GSL does: once
-    # a_n and b_n agree to a few ulp, further steps change nothing.
-    mu, nu = [np.ones_like(kc)], [kc.copy()]
-    while np.any(np.abs(mu[-1] - nu[-1]) > 4e-16 * (mu[-1] + nu[-1])):
-        a, b = mu[-1], nu[-1]
-        mu.append(0.5 * (a + b))
-        nu.append(np.sqrt(a * b))
+    # Double precision AGM for the Landen recurrence. Each element stops as GSL does, once its
+    # a_n and b_n agree to a few ulp; from there on its levels repeat a_n with b = a, which
+    # makes the extra steps of the recurrence in `core` exact identities (d = 1). So an
+    # element gets the same bits alone or beside a slower modulus (no dependence on the batch).
+    a, b = np.ones_like(kc), kc.copy()
+    done = np.abs(a - b) <= 4e-16 * (a + b)
+    mu, nu = [a], [np.where(done, a, b)]
+    while not np.all(done):
+        a, b = np.where(done, a, 0.5 * (a + b)), np.where(done, b, np.sqrt(a * b))
+        done = done | (np.abs(a - b) <= 4e-16 * (a + b))
+        mu.append(a)
+        nu.append(np.where(done, a, b))
         if len(mu) > 40:  # cannot happen for kc in (0, 1]; guards a bug
             raise RuntimeError("AGM did not converge")
-    # Double-double AGM for K itself, seeded with kc + kc_lo when the caller
-    # knows kc beyond double precision (an initial state of the pendulum).
+    # Double-double AGM for K itself, seeded with kc + kc_lo when the caller knows kc beyond
+    # double precision (an initial state of the pendulum); again each element stops alone.
     ah, al = np.ones_like(kc), np.zeros_like(kc)
     bh, bl = _fast_two_sum(kc, kc_lo + 0.0 * kc)
     for _ in range(60):
         dh, dl = _two_sum(ah, -bh)
-        if np.all(np.abs(dh + (dl + al - bl)) <= 1e-31 * ah):
+        done = np.abs(dh + (dl + al - bl)) <= 1e-31 * ah
+        if np.all(done):
             break
         sh, sl = _two_sum(ah, bh)
-        gh, gl = _dd_sqrt(*_dd_mul(ah, al, bh, bl))
-        ah, al = _fast_two_sum(0.5 * sh, 0.5 * (sl + al + bl))
-        bh, bl = gh, gl
-    kh, kl = _dd_div(0.5 * _PI_HI + 0.0 * ah, 0.5 * _PI_LO + 0.0 * ah, ah, al)
+        gh, gl = _dd.sqrt(*_dd.mul(ah, al, bh, bl), np.sqrt)
+        nh, nl = _fast_two_sum(0.5 * sh, 0.5 * (sl + al + bl))
+        ah, al = np.where(done, ah, nh), np.where(done, al, nl)
+        bh, bl = np.where(done, bh, gh), np.where(done, bl, gl)
+    kh, kl = _dd.div(0.5 * _PI_HI + 0.0 * ah, 0.5 * _PI_LO + 0.0 * ah, ah, al)
     k_hi = _chop(kh)
     k_mid = _chop(kh - k_hi + kl)
     k_lo = (kh - k_hi - k_mid) + kl
@@ -148,9 +119,9 @@ def complement(k: Any) -> tuple[Any, Any]:
     k = np.asarray(k, dtype=float)
     a, a_lo = _two_sum(1.0, -k)
     b, b_lo = _two_sum(1.0, k)
-    p, p_lo = _dd_mul(a, a_lo, b, b_lo)
+    p, p_lo = _dd.mul(a, a_lo, b, b_lo)
     with np.errstate(divide="ignore", invalid="ignore"):  # k = 1: kc = 0 exactly
-        hi, lo = _dd_sqrt(p, p_lo)
+        hi, lo = _dd.sqrt(p, p_lo, np.sqrt)
     return np.where(p == 0, 0.0, hi), np.where(p == 0, 0.0, lo)
 
 
@@ -159,13 +130,16 @@ def quarter_period(kc: Any, kc_lo: Any = 0.0) -> Any:
     return constants(kc, kc_lo).quarter
 
 
-def reduce(u, c: Constants, u_lo=0.0):
-    """Split u (+ u_lo) = n K + v with n an integer-valued float, |v| <= K/2 (about).
+def reduce(u, c: Constants, u_lo=0.0, quarters=0.0):
+    """Split u (+ u_lo) + quarters K = n K + v with n an integer-valued float, |v| <= K/2.
 
+    ``quarters`` (whole quarter periods) lets a caller hold an argument as a multiple of K
+    plus an exact remainder: the remainder then keeps its relative accuracy at t = 0.
     Returns (n mod 4 as float, n, v).
     """
     n = np.rint(u / c.quarter)
     v = ((u - n * c.k_hi) - n * c.k_mid) + (u_lo - n * c.k_lo)
+    n = n + quarters
     return np.mod(n, 4.0), n, v
 
 
@@ -206,7 +180,8 @@ def core(v, c: Constants):
     return sn, cn, dn, cc
 
 
-def evaluate(u, c: Constants, u_lo=0.0, amplitude: bool = False, name: str = "u"):
+def evaluate(u, c: Constants, u_lo=0.0, amplitude: bool = False, name: str = "u",
+             quarters=0.0):
     """sn, cn, dn (and am if ``amplitude``) at u + u_lo for kc in (0, 1].
 
     Reduces u by quarter periods, evaluates at |v| <= K/2 and shifts back by
@@ -215,7 +190,7 @@ def evaluate(u, c: Constants, u_lo=0.0, amplitude: bool = False, name: str = "u"
     than 2**26 quarter periods; beyond, a ValueError names the argument
     (``name``) rather than returning digits that are not there.
     """
-    q, n, v = reduce(u, c, u_lo)
+    q, n, v = reduce(u, c, u_lo, quarters)
     if np.any(np.abs(n) >= _MAX_QUARTERS):
         raise ValueError(f"{name} is too large: the elliptic argument must stay below "
                          "2**26 quarter periods (about 6.7e7 K1) for an exact reduction")
