@@ -195,9 +195,8 @@ def test_separatrix_at_long_times_without_warnings():
 @pytest.mark.parametrize("theta0", [math.pi, -math.pi])
 def test_singular_solution_stays_at_the_top(theta0):
     # Regime III's singular solution (DESIGN.md): at rest upside down it stays there.
-    # Only the double math.pi means pi itself (regimes.py); 3 * math.pi is a different double
-    # a hair away from 3 pi, so it librates with a tiny amplitude around the bottom-relative
-    # angle, and is not tested here.
+    # The double math.pi means pi itself (regimes.py); so do the doubles nearest the other
+    # odd multiples of pi (test_odd_multiples_of_pi_are_the_top).
     m = ep.solve(theta0, 0.0, 1.3)
     assert m.regime is Regime.SEPARATRIX
     ts = np.array([-1e6, -1.0, 0.0, 2.5, 1e3, 1e9])
@@ -281,12 +280,15 @@ def test_zz_report_worst_errors(capsys):
 
 # --- regressions from the review: odd multiples of pi, extreme scales, huge angles ----------
 
-@pytest.mark.parametrize("theta0", [3 * math.pi, -3 * math.pi, 7 * math.pi, 1e3, -1e6 + 0.5])
+@pytest.mark.parametrize("theta0", [math.nextafter(3 * math.pi, 0), -math.nextafter(3 * math.pi, 10),
+                                    math.nextafter(7 * math.pi, 30), 1e3, -1e6 + 0.5])
 def test_winding_number_of_far_angles_matches_mpmath(theta0, monkeypatch):
-    # theta0 = 2 pi m + r with m = nint(theta0 / 2 pi) taken exactly: 3 * math.pi / (2 pi)
-    # rounds to 1.5 in floating point, and round-half-even once picked the wrong turn
-    # (the pendulum then swung about 4 pi instead of 2 pi). Reference: mpmath through (25),
-    # at 90 digits: 3 * math.pi is 3.7e-16 from the top, where mpmath's K near m = 1 needs them.
+    # theta0 = 2 pi m + r with m = nint(theta0 / 2 pi) taken exactly: next to 3 pi,
+    # theta0 / (2 pi) rounds to 1.5 in floating point, and round-half-even once picked the
+    # wrong turn (the pendulum then swung about 4 pi instead of 2 pi). (The doubles nearest
+    # 3 pi and 7 pi themselves mean those multiples: test_odd_multiples_of_pi_are_the_top.)
+    # Reference: mpmath through (25), at 90 digits: these states are within 2e-15 of the
+    # top, where mpmath's K near m = 1 needs them.
     monkeypatch.setitem(globals(), "DPS", 90)
     _, err_th, err_dth = compare(theta0, 0.0, 1.0, periods=3, record=False)
     assert err_th <= 1e-12 and err_dth <= 1e-12, (err_th, err_dth)
@@ -323,3 +325,21 @@ def test_push_below_the_double_range_at_the_top_raises(dtheta0):
     # kc = |theta0'| / (2 omega0) would be subnormal: its period cannot be computed in double.
     with pytest.raises(ValueError, match="dtheta0"):
         ep.solve(math.pi, dtheta0)
+
+
+@pytest.mark.parametrize("multiple", [3, -3, 5, 7, -101, 2**19 + 1])
+def test_odd_multiples_of_pi_are_the_top(multiple):
+    # DESIGN.md: the double nearest an odd multiple of pi means that multiple, as math.pi
+    # means pi. Reference: that double from mpmath; its neighbours are taken exactly as
+    # they are and swing (II) about the bottom with an amplitude a hair below pi.
+    with mpmath.workdps(60):
+        theta0 = float(multiple * mpmath.pi)
+    m = ep.solve(theta0, 0.0, 1.3)
+    assert m.regime is Regime.SEPARATRIX and m.period == math.inf
+    ts = np.array([-1e6, 0.0, 2.5, 1e9])
+    np.testing.assert_array_equal(m.theta(ts), np.full(4, theta0))
+    np.testing.assert_array_equal(m.dtheta(ts), np.zeros(4))
+    for neighbour in (math.nextafter(theta0, 0.0), math.nextafter(theta0, 2 * theta0)):
+        assert ep.solve(neighbour).regime is Regime.LIBRATION
+    # the mutant "only math.pi is pi" would make 3 * math.pi a libration
+    assert ep.solve(3 * math.pi).regime is Regime.SEPARATRIX

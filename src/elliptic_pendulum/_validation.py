@@ -15,7 +15,8 @@ import numpy as np
 
 from . import _landen
 
-__all__ = ["real_array", "real_scalar", "modulus_pair", "positive_scalar", "scalar_or_array"]
+__all__ = ["real_array", "real_scalar", "modulus_pair", "positive_array", "positive_scalar",
+           "scalar_or_array"]
 
 
 _BEYOND_DOUBLES = "must be finite (a number within the range of doubles)"
@@ -103,6 +104,18 @@ def positive_scalar(value: Any, name: str) -> float:
     if not np.isfinite(x) or x <= 0:
         raise ValueError(f"{name} must be a finite number > 0, got {x!r}")
     return x
+
+
+def positive_array(value: Any, name: str) -> np.ndarray:
+    """Return ``value`` as a float array of finite numbers > 0, or raise naming ``name``."""
+    try:
+        array = real_array(value, name)
+    except ValueError:
+        raise ValueError(f"{name} must be a finite number > 0, got {value!r}") from None
+    if not np.all(array > 0):
+        bad = array[~(array > 0)].ravel()[0] if array.ndim else float(array)
+        raise ValueError(f"{name} must be a finite number > 0, got {float(bad)!r}")
+    return array
 
 
 def scalar_or_array(result: np.ndarray, *inputs: np.ndarray) -> Any:

@@ -16,28 +16,40 @@ IV, evaluated so that no digit is lost near the bottom or the top:
 from __future__ import annotations
 
 import math
+from collections.abc import Iterator
 from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
-from . import _landen
-from ._landen import _two_prod, _two_sum, gudermannian, sech
-from ._validation import positive_scalar, real_array, real_scalar, scalar_or_array
+from . import _flow, _landen
+from ._validation import positive_array, real_array, scalar_or_array
 from .regimes import (
+    LIBRATION,
+    REGIMES,
+    REST,
+    ROTATION,
+    SEPARATRIX,
     Regime,
-    State,
     classify,
-    libration_phase,
-    rotation_phase,
+    phases,
 )
 
 __all__ = ["Motion", "solve"]
 
+# What a time or an array of times may be; a float or an ndarray comes back.
+ArrayLike = npt.ArrayLike
+FloatOrArray = float | npt.NDArray[np.float64]
 
-@dataclass(frozen=True)
+
+@dataclass(frozen=True, eq=False, repr=False)
 class Motion:
-    r"""One solution of (3), theta'' = -w0^2 sin theta; made by :func:`solve`.
+    r"""Solutions of (3), theta'' = -w0^2 sin theta, one per initial state; made by :func:`solve`.
+
+    A Motion holds one state (its attributes are Python floats) or an array of states of
+    shape ``S`` (its attributes are arrays of that shape; ``regime`` an array of
+    :class:`Regime`). ``m[i]``, ``len(m)`` and iteration give the Motions of single states.
 
     Attributes
     ----------
@@ -62,79 +74,130 @@ class Motion:
         limit of (26) at zero amplitude, 2 pi / w0 of (8).
     """
 
-    regime: Regime
-    theta0: float
-    dtheta0: float
-    omega0: float
-    energy_constant: float
-    modulus: float
-    complementary_modulus: float
-    amplitude: float
-    phase: float
-    direction: int
-    period: float
-    _state: State = field(repr=False, compare=False)
+    regime: Any
+    theta0: Any
+    dtheta0: Any
+    omega0: Any
+    energy_constant: Any
+    modulus: Any
+    complementary_modulus: Any
+    amplitude: Any
+    phase: Any
+    direction: Any
+    period: Any
+    _beta: Any = field(repr=False)
+    _p: _flow.Params = field(repr=False)
 
     @property
-    def beta(self) -> float:
-        """Return the note's beta = c1 / (2 w0^2) of (29), greater than 1 in regime IV."""
-        return self._state.beta
+    def shape(self) -> tuple[int, ...]:
+        """The shape S of the array of states; () for a single state."""
+        return np.shape(self._p.code)
 
     @property
-    def alpha(self) -> float | None:
-        """The note's alpha = sin(theta0/2) of (14) in regime II, else None."""
-        return self.modulus if self.regime is Regime.LIBRATION else None
+    def beta(self) -> FloatOrArray:
+        """Return the note's beta = c1 / (2 w0^2) of (29), greater than 1 in regime IV.
+
+        Raises ValueError (naming omega0) where beta exceeds the range of doubles, which
+        only a tiny omega0 beside a real push can do: never a silent inf.
+        """
+        if not np.all(np.isfinite(self._beta)):
+            raise ValueError("beta = c1 / (2 omega0**2) exceeds the range of doubles: omega0 "
+                             "is too small for this dtheta0 (the motion itself is fine)")
+        return self._beta
 
     @property
-    def gamma(self) -> float | None:
-        """The note's gamma = sqrt(2/(beta + 1)) of §6 in regime IV, else None."""
-        return self.modulus if self.regime is Regime.ROTATION else None
+    def alpha(self) -> Any:
+        """The note's alpha = sin(theta0/2) of (14) in regime II, else None (NaN in an array)."""
+        return self._named(Regime.LIBRATION)
 
-    def theta(self, t: Any) -> Any:
-        """Return the angle theta(t) in radians; float or array like ``t``.
+    @property
+    def gamma(self) -> Any:
+        """The note's gamma = sqrt(2/(beta + 1)) of §6 in regime IV, else None (NaN in an array)."""
+        return self._named(Regime.ROTATION)
+
+    def _named(self, regime: Regime) -> Any:
+        if self.shape == ():
+            return self.modulus if self.regime is regime else None
+        return np.where(self._p.code == REGIMES.index(regime), self.modulus, np.nan)
+
+    def theta(self, t: ArrayLike) -> FloatOrArray:
+        """Return the angle theta(t) in radians; float, or an array of shape broadcast(S, t).
 
         Any real t up to about 6.7e7 quarter periods (2**26) from 0; beyond, the
         reduction of the elliptic argument is not exact and a ValueError names t.
         """
         t = real_array(t, "t")
-        return scalar_or_array(self._evaluate(t)[0], t)
+        return scalar_or_array(_flow.evaluate(self._p, t, True, False)[0], t, self._p.code)
 
-    def dtheta(self, t: Any) -> Any:
-        """Return the angular velocity theta'(t); float or array like ``t``."""
+    def dtheta(self, t: ArrayLike) -> FloatOrArray:
+        """Return the angular velocity theta'(t); float, or an array of shape broadcast(S, t)."""
         t = real_array(t, "t")
-        return scalar_or_array(self._evaluate(t)[1], t)
+        return scalar_or_array(_flow.evaluate(self._p, t, False, True)[1], t, self._p.code)
 
-    def _evaluate(self, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        st, w0, sgn = self._state, self.omega0, self.direction
-        if self.regime is Regime.REST or (self.regime is Regime.SEPARATRIX
-                                          and st.w == 0.0):
-            return np.full(t.shape, st.turns + st.r), np.zeros(t.shape)
-        if self.regime is Regime.SEPARATRIX:
-            with np.errstate(over="ignore"):  # w0 t = +-inf still means theta = +-pi
-                x = w0 * t + self.phase
-            return st.turns + sgn * 2.0 * gudermannian(x), sgn * 2.0 * w0 * sech(x)
-        # u = rate t + phase, with rate = w0 (II) or w0 / gamma = w0 k (IV) known to
-        # 1e-32, carried as a double-double: the phase survives thousands of periods.
-        with np.errstate(over="ignore"):  # an overflow here is exactly what is reported
-            # Beyond 1e290, Dekker's split in the exact product overflows.
-            in_range = np.all((np.abs(t) <= 1e290) & (np.abs(t) * st.rate <= 1e290))
-        if not in_range:
-            raise ValueError("t is too large: |omega0 t| must stay below about 1e290 "
-                             "(the elliptic argument grows like omega0 t)")
-        p, p_lo = _two_prod(st.rate, t)
-        u, u_lo = _two_sum(p, self.phase)
-        u_lo = u_lo + (p_lo + st.rate_lo * t)
-        c = _landen.constants(self.complementary_modulus, st.mod_c_lo)
-        rotation = self.regime is Regime.ROTATION
-        sn, cn, dn, am = _landen.evaluate(u, c, u_lo, amplitude=rotation, name="t")
-        if rotation:  # (46): theta = +-2 am, theta' = +-2 (w0 / gamma) dn
-            return st.turns + sgn * 2.0 * am, sgn * 2.0 * st.rate * dn
-        # (25) as theta / 2 = atan2(alpha sn, dn): arcsin near 1 would halve the digits.
-        k = self.modulus
-        return st.turns + 2.0 * np.arctan2(k * sn, dn), 2.0 * w0 * k * cn
+    def state(self, t: ArrayLike) -> tuple[FloatOrArray, FloatOrArray]:
+        """Return (theta(t), theta'(t)) from one evaluation (cheaper than the two calls).
+
+        Examples
+        --------
+        >>> m = solve(1.0, 0.5)
+        >>> m.state(2.0) == (m.theta(2.0), m.dtheta(2.0))
+        True
+        """
+        t = real_array(t, "t")
+        theta, dtheta = _flow.evaluate(self._p, t)
+        return (scalar_or_array(theta, t, self._p.code),
+                scalar_or_array(dtheta, t, self._p.code))
+
+    def __len__(self) -> int:
+        """The number of states along the first axis of S."""
+        if self.shape == ():
+            raise TypeError("len() of a Motion of a single state")
+        return self.shape[0]
+
+    def __getitem__(self, index: Any) -> Motion:
+        """The Motion of the states ``S[index]``: a single state for an integer index."""
+        if self.shape == ():
+            raise TypeError("a Motion of a single state cannot be indexed")
+        p = self._p
+        c = p.landen
+
+        def pick(x):
+            return np.broadcast_to(x, self.shape)[index]
+
+        landen = _landen.Constants(*(pick(x) for x in c[:6]), tuple(pick(x) for x in c.mu),
+                                   tuple(pick(x) for x in c.nu))
+        sub = _flow.Params(*(pick(x) for x in p[:13]), landen)
+        return _build(*(pick(x) for x in (self.regime, self.theta0, self.dtheta0, self.omega0,
+                                          self.energy_constant, self.modulus,
+                                          self.complementary_modulus, self.amplitude,
+                                          self.phase, self.direction, self.period,
+                                          self._beta)), sub)
+
+    def __iter__(self) -> Iterator[Motion]:
+        """The Motions of the states along the first axis of S."""
+        for i in range(len(self)):
+            yield self[i]
 
 
-def solve(theta0: Any, dtheta0: Any = 0.0, omega0: Any = 1.0) -> Motion:
+def _build(*values: Any) -> Motion:
+    """A Motion from its public values and its Params; plain Python scalars for one state."""
+    *public, beta, p = values
+    if np.ndim(p.code) == 0:
+        regime = public[0]
+        regime = regime.item() if isinstance(regime, np.ndarray) else regime
+        public = [regime, *(float(x) for x in public[1:9]), int(public[9]), float(public[10])]
+        beta = float(beta)
+        p = _flow.Params(*(x[()] if isinstance(x, np.ndarray) else x for x in p[:13]),
+                         p.landen)
+    return Motion(*public, beta, p)
+
+
+def _reject(bad: np.ndarray, message: str) -> None:
+    if np.any(bad):
+        raise ValueError(message)
+
+
+def solve(theta0: ArrayLike, dtheta0: ArrayLike = 0.0, omega0: ArrayLike = 1.0) -> Motion:
     r"""Solve (3) exactly from the initial state (theta0, theta0') at t = 0.
 
     .. math:: \theta'' = -\omega_0^2 \sin\theta, \qquad
@@ -188,36 +251,54 @@ def solve(theta0: Any, dtheta0: Any = 0.0, omega0: Any = 1.0) -> Motion:
     >>> solve(math.pi).theta(100.0) == math.pi
     True
     """
-    theta0 = real_scalar(theta0, "theta0")
-    dtheta0 = real_scalar(dtheta0, "dtheta0")
-    omega0 = positive_scalar(omega0, "omega0")
-    st = classify(theta0, dtheta0, omega0)
-    if not st.rate < 1e290:
-        raise ValueError("dtheta0 / omega0 and omega0 are too large together: the rate "
-                         "omega0 * max(1, |dtheta0| / (2 omega0)) must stay below 1e290")
-    if st.regime in (Regime.LIBRATION, Regime.ROTATION) and st.mod_c < 1e-300:
-        # Only a push of under 1e-300 rad/s at the very top gets here: kc would be subnormal
-        # and K = log(4/kc) (hence the period) would lose its digits.
-        raise ValueError("dtheta0 is too small for a state this close to the top: the "
-                         "complementary modulus falls below 1e-300; use dtheta0 = 0 "
-                         "(balanced at the top) or |dtheta0| >= 2e-300 * omega0")
-    c1 = st.c1
-    if st.regime is Regime.REST:
-        return Motion(st.regime, theta0, dtheta0, omega0, c1, 0.0, 1.0, 0.0, 0.0, 1,
-                      2.0 * math.pi / omega0, st)
-    if st.regime is Regime.SEPARATRIX:
-        sgn = 1 if st.w > 0 else -1
-        phase = 0.0 if st.w == 0 else sgn * math.asinh(st.s / st.c)
-        return Motion(st.regime, theta0, dtheta0, omega0, c1, 1.0, 0.0, math.pi, phase,
-                      sgn, math.inf, st)
-    if st.regime is Regime.LIBRATION:
-        kc = st.mod_c
-        quarter = float(_landen.constants(kc, st.mod_c_lo).quarter)
-        return Motion(st.regime, theta0, dtheta0, omega0, c1, st.k, kc,
-                      2.0 * math.atan2(st.k, kc), libration_phase(st, quarter), 1,
-                      4.0 * quarter / omega0, st)
-    sgn = 1 if st.w > 0 else -1
-    gamma, gamma_c = 1.0 / st.k, st.mod_c
-    quarter = float(_landen.constants(gamma_c, st.mod_c_lo).quarter)
-    return Motion(st.regime, theta0, dtheta0, omega0, c1, gamma, gamma_c, math.inf,
-                  rotation_phase(st, sgn, quarter), sgn, 2.0 * quarter / st.rate, st)
+    th = real_array(theta0, "theta0")
+    v = real_array(dtheta0, "dtheta0")
+    w0 = positive_array(omega0, "omega0")
+    try:
+        shape = np.broadcast_shapes(th.shape, v.shape, w0.shape)
+    except ValueError:
+        raise ValueError(f"theta0, dtheta0 and omega0 must broadcast together (numpy rules); "
+                         f"got shapes {th.shape}, {v.shape}, {w0.shape}") from None
+    th, v, w0 = (np.broadcast_to(x, shape) for x in (th, v, w0))
+    st = classify(th, v, w0)
+    code = st.code
+    elliptic = (code == LIBRATION) | (code == ROTATION)
+    _reject(~(st.rate < 1e290), "dtheta0 / omega0 and omega0 are too large together: the "
+            "rate omega0 * max(1, |dtheta0| / (2 omega0)) must stay below 1e290")
+    # Only a push of under 1e-300 rad/s at the very top gets here: kc would be subnormal
+    # and K = log(4/kc) (hence the period) would lose its digits.
+    _reject(elliptic & (st.mod_c < 1e-300), "dtheta0 is too small for a state this close to "
+            "the top: the complementary modulus falls below 1e-300; use dtheta0 = 0 (balanced "
+            "at the top) or |dtheta0| >= 2e-300 * omega0")
+    with np.errstate(over="ignore", invalid="ignore"):
+        # c1 = 2 w0^2 beta; where beta overflows (a tiny omega0) c1 = theta'^2 - 2 w0^2 cos r
+        # has no cancellation left to fear: theta'^2 dominates.
+        c1 = np.where(np.isfinite(st.beta), (2.0 * w0) * (w0 * st.beta),
+                      v * v - 2.0 * w0 * w0 * (st.c - st.s) * (st.c + st.s))
+    _reject(~np.isfinite(c1), "dtheta0 is too large: the energy constant "
+            "c1 = dtheta0**2 - 2 omega0**2 cos(theta0) would overflow (|dtheta0| < 1e154)")
+    landen = _landen.constants(np.where(elliptic, st.mod_c, 1.0),
+                               np.where(elliptic, st.mod_c_lo, 0.0))
+    quarters, rem = phases(st, landen.quarter)
+    lib, rot, sep = code == LIBRATION, code == ROTATION, code == SEPARATRIX
+    still = (code == REST) | (sep & (st.w == 0))
+    sigma = np.where((sep | rot) & (st.w < 0), -1.0, 1.0)
+    with np.errstate(all="ignore"):  # branches that np.where drops may divide by zero
+        x0 = sigma * np.arcsinh(st.s / st.c)
+        phase = np.where(elliptic, quarters * landen.quarter + rem, np.where(sep & ~still, x0, 0.0))
+        gamma = 1.0 / st.k
+        period = np.where(lib, 4.0 * landen.quarter / w0,
+                          np.where(rot, 2.0 * landen.quarter / st.rate, 2.0 * math.pi / w0))
+    period = np.where(sep, math.inf, period)
+    modulus = np.where(lib, st.k, np.where(rot, gamma, np.where(sep, 1.0, 0.0)))
+    complement = np.where(elliptic, st.mod_c, np.where(sep, 0.0, 1.0))
+    amplitude = np.where(lib, 2.0 * np.arctan2(st.k, st.mod_c),
+                         np.where(rot, math.inf, np.where(sep, math.pi, 0.0)))
+    regime = np.empty(shape, dtype=object)
+    for number, member in enumerate(REGIMES):
+        regime[code == number] = member
+    p = _flow.Params(code, still, th, st.turns, w0, sigma, np.where(lib, st.k, 0.0), st.s,
+                     st.c, np.where(elliptic, st.rate, 0.0), np.where(elliptic, st.rate_lo, 0.0),
+                     quarters, rem, landen)
+    return _build(regime, th, v, w0, c1, modulus, complement, amplitude, phase,
+                  sigma.astype(int), period, st.beta, p)

@@ -1,0 +1,55 @@
+"""Classification of initial states outside the range of the double-double path.
+
+Angles beyond 2**20 rad (whose reduction by 2 pi needs more than three parts of pi), and
+speeds ``theta'/(2 omega0)`` beyond 2**(+-300) (whose squares leave the range of doubles)
+are rare; each is classified on its own in a private mpmath context made for the call, at 50
+digits beyond the size of the angle. A private context (``mpmath.MPContext()``) is used and
+never ``mpmath.mp``, whose precision is shared by the whole process and all of its threads.
+"""
+
+from __future__ import annotations
+
+import math
+
+import mpmath
+
+from . import regimes
+
+__all__ = ["classify"]
+
+
+def _split(x) -> tuple[float, float]:
+    hi = float(x)
+    return hi, float(x - hi)
+
+
+def classify(theta0: float, dtheta0: float, omega0: float) -> tuple:
+    """The fields of :class:`regimes.State` for one state, in order."""
+    ctx = mpmath.MPContext()
+    ctx.dps = 50 + int(max(0.0, math.log10(abs(theta0) + 1.0)))  # 2 pi m must be exact too
+    w0 = ctx.mpf(omega0)
+    w = ctx.mpf(dtheta0) / (2 * w0)
+    m = ctx.nint(ctx.mpf(theta0) / (2 * ctx.pi))
+    odd = ctx.nint((ctx.mpf(theta0) / ctx.pi - 1) / 2) * 2 + 1
+    # The double nearest an odd multiple of pi, while doubles are spaced finer than pi.
+    if 0 < abs(theta0) < 2.0**50 and float(odd * ctx.pi) == theta0:
+        up = 1 if theta0 > 0 else -1
+        m = (odd - up) / 2
+        s, c = ctx.mpf(up), ctx.mpf(0)
+    else:
+        r = ctx.mpf(theta0) - 2 * ctx.pi * m
+        s, c = ctx.sin(r / 2), ctx.cos(r / 2)
+    k2, kc2 = s * s + w * w, (c - abs(w)) * (c + abs(w))
+    k, kc = ctx.sqrt(k2), ctx.sqrt(abs(kc2))
+    if s == 0 and w == 0:
+        code = regimes.REST
+    elif kc2 == 0:
+        code = regimes.SEPARATRIX
+    elif kc2 > 0:
+        code = regimes.LIBRATION
+    else:
+        code = regimes.ROTATION
+    # The elliptic modulus: alpha = k in II (14); gamma = 1/k in IV.
+    mod_c, rate = (kc, w0) if kc2 >= 0 else (kc / k, w0 * k)
+    return (code, float(2 * ctx.pi * m), float(s), float(c), float(w), float(k),
+            *_split(mod_c), *_split(rate), float(2 * k2 - 1))
