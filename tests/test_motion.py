@@ -280,7 +280,8 @@ def test_zz_report_worst_errors(capsys):
 
 # --- regressions from the review: odd multiples of pi, extreme scales, huge angles ----------
 
-@pytest.mark.parametrize("theta0", [math.nextafter(3 * math.pi, 0), -math.nextafter(3 * math.pi, 10),
+@pytest.mark.parametrize("theta0", [math.nextafter(3 * math.pi, 0),
+                                    -math.nextafter(3 * math.pi, 10),
                                     math.nextafter(7 * math.pi, 30), 1e3, -1e6 + 0.5])
 def test_winding_number_of_far_angles_matches_mpmath(theta0, monkeypatch):
     # theta0 = 2 pi m + r with m = nint(theta0 / 2 pi) taken exactly: next to 3 pi,

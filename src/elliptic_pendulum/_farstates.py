@@ -24,7 +24,7 @@ def _split(x) -> tuple[float, float]:
 
 
 def classify(theta0: float, dtheta0: float, omega0: float) -> tuple:
-    """The fields of :class:`regimes.State` for one state, in order."""
+    """Return the fields of :class:`regimes.State` for one state, in order."""
     ctx = mpmath.MPContext()
     ctx.dps = 50 + int(max(0.0, math.log10(abs(theta0) + 1.0)))  # 2 pi m must be exact too
     w0 = ctx.mpf(omega0)
@@ -52,4 +52,4 @@ def classify(theta0: float, dtheta0: float, omega0: float) -> tuple:
     # The elliptic modulus: alpha = k in II (14); gamma = 1/k in IV.
     mod_c, rate = (kc, w0) if kc2 >= 0 else (kc / k, w0 * k)
     return (code, float(2 * ctx.pi * m), float(s), float(c), float(w), float(k),
-            *_split(mod_c), *_split(rate), float(2 * k2 - 1))
+            *_split(mod_c), *_split(rate), *_split(2 * k2 - 1))

@@ -50,9 +50,9 @@ def _pieces(p: Params) -> list[Any]:
 
 
 def _unpieces(pieces: list[Any], levels: int) -> Params:
-    c = _landen.Constants(*pieces[13:19], tuple(pieces[19:19 + levels]),
-                          tuple(pieces[19 + levels:]))
-    return Params(*pieces[:13], c)
+    c = _landen.Constants._make([*pieces[13:19], tuple(pieces[19:19 + levels]),
+                                 tuple(pieces[19 + levels:])])
+    return Params._make([*pieces[:13], c])
 
 
 def _kernel(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool):

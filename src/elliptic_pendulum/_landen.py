@@ -84,7 +84,8 @@ def _constants(kc: Any, kc_lo: Any = 0.0) -> Constants:
         if np.all(done):
             break
         sh, sl = _two_sum(ah, bh)
-        gh, gl = _dd.sqrt(*_dd.mul(ah, al, bh, bl), np.sqrt)
+        ph, pl = _dd.mul(ah, al, bh, bl)
+        gh, gl = _dd.sqrt(ph, pl, np.sqrt)
         nh, nl = _fast_two_sum(0.5 * sh, 0.5 * (sl + al + bl))
         ah, al = np.where(done, ah, nh), np.where(done, al, nl)
         bh, bl = np.where(done, bh, gh), np.where(done, bl, gl)

@@ -15,25 +15,18 @@ IV, evaluated so that no digit is lost near the bottom or the top:
 
 from __future__ import annotations
 
-import math
 from collections.abc import Iterator
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, overload
 
 import numpy as np
 import numpy.typing as npt
 
-from . import _flow, _landen
+from . import _flow, _landen, _states
 from ._validation import positive_array, real_array, scalar_or_array
 from .regimes import (
-    LIBRATION,
     REGIMES,
-    REST,
-    ROTATION,
-    SEPARATRIX,
     Regime,
-    classify,
-    phases,
 )
 
 __all__ = ["Motion", "solve"]
@@ -120,6 +113,11 @@ class Motion:
             return self.modulus if self.regime is regime else None
         return np.where(self._p.code == REGIMES.index(regime), self.modulus, np.nan)
 
+    @overload
+    def theta(self, t: float) -> float: ...
+    @overload
+    def theta(self, t: npt.NDArray[Any] | list[float]) -> npt.NDArray[np.float64]: ...
+
     def theta(self, t: ArrayLike) -> FloatOrArray:
         """Return the angle theta(t) in radians; float, or an array of shape broadcast(S, t).
 
@@ -128,6 +126,11 @@ class Motion:
         """
         t = real_array(t, "t")
         return scalar_or_array(_flow.evaluate(self._p, t, True, False)[0], t, self._p.code)
+
+    @overload
+    def dtheta(self, t: float) -> float: ...
+    @overload
+    def dtheta(self, t: npt.NDArray[Any] | list[float]) -> npt.NDArray[np.float64]: ...
 
     def dtheta(self, t: ArrayLike) -> FloatOrArray:
         """Return the angular velocity theta'(t); float, or an array of shape broadcast(S, t)."""
@@ -149,13 +152,13 @@ class Motion:
                 scalar_or_array(dtheta, t, self._p.code))
 
     def __len__(self) -> int:
-        """The number of states along the first axis of S."""
+        """Return the number of states along the first axis of S."""
         if self.shape == ():
             raise TypeError("len() of a Motion of a single state")
         return self.shape[0]
 
     def __getitem__(self, index: Any) -> Motion:
-        """The Motion of the states ``S[index]``: a single state for an integer index."""
+        """Return the Motion of the states ``S[index]``: one state for an integer index."""
         if self.shape == ():
             raise TypeError("a Motion of a single state cannot be indexed")
         p = self._p
@@ -164,9 +167,10 @@ class Motion:
         def pick(x):
             return np.broadcast_to(x, self.shape)[index]
 
-        landen = _landen.Constants(*(pick(x) for x in c[:6]), tuple(pick(x) for x in c.mu),
-                                   tuple(pick(x) for x in c.nu))
-        sub = _flow.Params(*(pick(x) for x in p[:13]), landen)
+        landen = _landen.Constants._make([*(pick(x) for x in c[:6]),
+                                          tuple(pick(x) for x in c.mu),
+                                          tuple(pick(x) for x in c.nu)])
+        sub = _flow.Params._make([*(pick(x) for x in p[:13]), landen])
         return _build(*(pick(x) for x in (self.regime, self.theta0, self.dtheta0, self.omega0,
                                           self.energy_constant, self.modulus,
                                           self.complementary_modulus, self.amplitude,
@@ -174,22 +178,22 @@ class Motion:
                                           self._beta)), sub)
 
     def __iter__(self) -> Iterator[Motion]:
-        """The Motions of the states along the first axis of S."""
+        """Yield the Motions of the states along the first axis of S."""
         for i in range(len(self)):
             yield self[i]
 
 
 def _build(*values: Any) -> Motion:
-    """A Motion from its public values and its Params; plain Python scalars for one state."""
+    """Make a Motion from its public values and Params; Python scalars for one state."""
     *public, beta, p = values
     if np.ndim(p.code) == 0:
         regime = public[0]
         regime = regime.item() if isinstance(regime, np.ndarray) else regime
         public = [regime, *(float(x) for x in public[1:9]), int(public[9]), float(public[10])]
         beta = float(beta)
-        p = _flow.Params(*(x[()] if isinstance(x, np.ndarray) else x for x in p[:13]),
-                         p.landen)
-    return Motion(*public, beta, p)
+        p = _flow.Params._make([*(x[()] if isinstance(x, np.ndarray) else x for x in p[:13]),
+                                p.landen])
+    return Motion(*public, beta, p)  # type: ignore[call-arg]  # the 11 public values
 
 
 def _reject(bad: np.ndarray, message: str) -> None:
@@ -259,46 +263,8 @@ def solve(theta0: ArrayLike, dtheta0: ArrayLike = 0.0, omega0: ArrayLike = 1.0) 
     except ValueError:
         raise ValueError(f"theta0, dtheta0 and omega0 must broadcast together (numpy rules); "
                          f"got shapes {th.shape}, {v.shape}, {w0.shape}") from None
-    th, v, w0 = (np.broadcast_to(x, shape) for x in (th, v, w0))
-    st = classify(th, v, w0)
-    code = st.code
-    elliptic = (code == LIBRATION) | (code == ROTATION)
-    _reject(~(st.rate < 1e290), "dtheta0 / omega0 and omega0 are too large together: the "
-            "rate omega0 * max(1, |dtheta0| / (2 omega0)) must stay below 1e290")
-    # Only a push of under 1e-300 rad/s at the very top gets here: kc would be subnormal
-    # and K = log(4/kc) (hence the period) would lose its digits.
-    _reject(elliptic & (st.mod_c < 1e-300), "dtheta0 is too small for a state this close to "
-            "the top: the complementary modulus falls below 1e-300; use dtheta0 = 0 (balanced "
-            "at the top) or |dtheta0| >= 2e-300 * omega0")
-    with np.errstate(over="ignore", invalid="ignore"):
-        # c1 = 2 w0^2 beta; where beta overflows (a tiny omega0) c1 = theta'^2 - 2 w0^2 cos r
-        # has no cancellation left to fear: theta'^2 dominates.
-        c1 = np.where(np.isfinite(st.beta), (2.0 * w0) * (w0 * st.beta),
-                      v * v - 2.0 * w0 * w0 * (st.c - st.s) * (st.c + st.s))
-    _reject(~np.isfinite(c1), "dtheta0 is too large: the energy constant "
-            "c1 = dtheta0**2 - 2 omega0**2 cos(theta0) would overflow (|dtheta0| < 1e154)")
-    landen = _landen.constants(np.where(elliptic, st.mod_c, 1.0),
-                               np.where(elliptic, st.mod_c_lo, 0.0))
-    quarters, rem = phases(st, landen.quarter)
-    lib, rot, sep = code == LIBRATION, code == ROTATION, code == SEPARATRIX
-    still = (code == REST) | (sep & (st.w == 0))
-    sigma = np.where((sep | rot) & (st.w < 0), -1.0, 1.0)
-    with np.errstate(all="ignore"):  # branches that np.where drops may divide by zero
-        x0 = sigma * np.arcsinh(st.s / st.c)
-        phase = np.where(elliptic, quarters * landen.quarter + rem, np.where(sep & ~still, x0, 0.0))
-        gamma = 1.0 / st.k
-        period = np.where(lib, 4.0 * landen.quarter / w0,
-                          np.where(rot, 2.0 * landen.quarter / st.rate, 2.0 * math.pi / w0))
-    period = np.where(sep, math.inf, period)
-    modulus = np.where(lib, st.k, np.where(rot, gamma, np.where(sep, 1.0, 0.0)))
-    complement = np.where(elliptic, st.mod_c, np.where(sep, 0.0, 1.0))
-    amplitude = np.where(lib, 2.0 * np.arctan2(st.k, st.mod_c),
-                         np.where(rot, math.inf, np.where(sep, math.pi, 0.0)))
+    public, p = _states.solve(*(np.broadcast_to(x, shape) for x in (th, v, w0)))
     regime = np.empty(shape, dtype=object)
     for number, member in enumerate(REGIMES):
-        regime[code == number] = member
-    p = _flow.Params(code, still, th, st.turns, w0, sigma, np.where(lib, st.k, 0.0), st.s,
-                     st.c, np.where(elliptic, st.rate, 0.0), np.where(elliptic, st.rate_lo, 0.0),
-                     quarters, rem, landen)
-    return _build(regime, th, v, w0, c1, modulus, complement, amplitude, phase,
-                  sigma.astype(int), period, st.beta, p)
+        regime[p.code == number] = member
+    return _build(regime, *public[:3], *public[3:], p)

@@ -67,6 +67,7 @@ class State(NamedTuple):
     rate: np.ndarray       # d(argument)/dt: omega0 in II, omega0 / gamma = omega0 k in IV
     rate_lo: np.ndarray    # its low part
     beta: np.ndarray       # c1 / (2 omega0^2) = 2 k^2 - 1, the note's beta of (29)
+    beta_lo: np.ndarray    # its low part
 
 
 _TABLES = tuple(np.array(t) for t in (_dd.SIN_HI, _dd.SIN_LO, _dd.COS_HI, _dd.COS_LO))
@@ -90,7 +91,7 @@ def _minus_turns(th, m):
 
 
 def _odd_pi(th):
-    """True where th is the double nearest an odd multiple of pi; and that odd integer."""
+    """Return where th is the double nearest an odd multiple of pi, and that odd integer."""
     odd = 2.0 * np.floor(0.5 * (th / _dd.PI_HI + 1.0)) - 1.0
     odd = np.where(odd == 0, 1.0, odd)
     p, e = _dd.two_prod(odd, _dd.PI_HI)
@@ -98,7 +99,7 @@ def _odd_pi(th):
 
 
 def _half_angle(th):
-    """(turns, s, c) of theta0 = 2 pi m + r: s, c = sin(r/2), cos(r/2) as double-doubles."""
+    """Return (turns, s, c) of theta0 = 2 pi m + r; s, c = sin(r/2), cos(r/2) double-double."""
     m = np.rint(th / _TWO_PI[0])
     rh, rl = _minus_turns(th, m)
     # rint(th / 2pi) in doubles can miss by one next to an odd multiple of pi: keep |r| <= pi.
@@ -130,7 +131,7 @@ def _half_angle(th):
 
 
 def _near(th, v, w0):
-    """The classification in double-double arithmetic, for states in the usual range."""
+    """Classify in double-double arithmetic, for states in the usual range."""
     turns, (sh, sl), (ch, cl) = _half_angle(th)
     wh = v / (2.0 * w0)
     p, e = _dd.two_prod(wh, 2.0 * w0)
@@ -152,9 +153,9 @@ def _near(th, v, w0):
     mod_c = (np.where(rot, gc[0], kc[0]), np.where(rot, gc[1], kc[1]))
     mod_c = (np.where(off, mod_c[0], 0.0), np.where(off, mod_c[1], 0.0))
     rate = (np.where(rot, rate[0], w0), np.where(rot, rate[1], 0.0))
-    beta = _dd.add(*k2, -kc2[0], -kc2[1])[0]             # k^2 - kc^2 = 2 k^2 - 1
+    beta = _dd.add(*k2, -kc2[0], -kc2[1])                # k^2 - kc^2 = 2 k^2 - 1
     k_out = np.where(moving, k[0], 0.0)
-    return State(code, turns, sh, ch, wh, k_out, *mod_c, *rate, beta)
+    return State(code, turns, sh, ch, wh, k_out, *mod_c, *rate, *beta)
 
 
 def classify(theta0: np.ndarray, dtheta0: np.ndarray, omega0: np.ndarray) -> State:
@@ -193,7 +194,7 @@ def _rf(x, y):
 
 
 def phases(st: State, quarter: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The elliptic argument at t = 0 as (q, rem): q whole quarter periods plus |rem| <~ K/2.
+    """Return the elliptic argument at t = 0 as (q, rem): q quarter periods plus |rem| <~ K/2.
 
     II: am(c2, alpha) = atan2(s, w); IV: am(c4, gamma) = direction r / 2. Near a turning
     point (II) or the top (IV) the argument is K minus a small g, and g is computed directly,
@@ -210,18 +211,27 @@ def phases(st: State, quarter: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         # |sn| <= 1/sqrt(2) <= sn(K/2) = 1/sqrt(1 + kc): nearer the bottom than the turn.
         bottom = np.where(lib, 2.0 * s * s <= k * k, 2.0 * s * s <= 1.0)
         aw = np.abs(w)
-        # II, near the bottom: F(asin(s/k)), from the upswing (w >= 0) or the downswing.
-        f_lib = (s / k) * _rf((w / k) ** 2, c * c)
-        # II, near a turning point: K - c2 = g with sn g = w/(k c), cn g = kc s/(k c), dn g = kc/c.
-        g_lib = (w / (k * c)) * _rf((kc * s / (k * c)) ** 2, (kc / c) ** 2)
-        # IV: c4 = direction F(r/2 | gamma); near the top K - |c4| = g, sn g = c k/|w|,
-        # cn g = gamma_c |s| k/|w|, dn g = gamma_c k/|w|.
-        f_rot = sgn_w * s * _rf(c * c, (w / k) ** 2)
-        g_rot = (c * k / aw) * _rf((kc * s * k / aw) ** 2, (kc * k / aw) ** 2)
+        # One R_F per state, with the arguments of its branch:
+        # II near the bottom: F(asin(s/k)) = (s/k) R_F((w/k)^2, c^2), from the upswing
+        #   (w >= 0) or the downswing;
+        # II near a turning point: K - c2 = g with sn g = w/(k c), cn g = kc s/(k c),
+        #   dn g = kc/c;
+        # IV near the bottom: c4 = direction F(r/2 | gamma) = direction s R_F(c^2, (w/k)^2);
+        # IV near the top: K - |c4| = g, sn g = c k/|w|, cn g = gamma_c |s| k/|w|,
+        #   dn g = gamma_c k/|w|.
+        lib_x = np.where(bottom, (w / k) ** 2, (kc * s / (k * c)) ** 2)
+        lib_y = np.where(bottom, c * c, (kc / c) ** 2)
+        rot_x = np.where(bottom, c * c, (kc * s * k / aw) ** 2)
+        rot_y = np.where(bottom, (w / k) ** 2, (kc * k / aw) ** 2)
+        factor = np.where(lib, np.where(bottom, s / k, w / (k * c)),
+                          np.where(bottom, sgn_w * s, c * k / aw))
+        x, y = np.where(lib, lib_x, rot_x), np.where(lib, lib_y, rot_y)
+        moving = lib | rot
+        f = factor * _rf(np.where(moving, x, 1.0), np.where(moving, y, 1.0))
         q_lib = np.where(bottom, np.where(w >= 0, 0.0, 2.0 * sgn_s), sgn_s)
-        r_lib = np.where(bottom, np.where(w >= 0, f_lib, -f_lib), -sgn_s * g_lib)
+        r_lib = np.where(bottom, np.where(w >= 0, f, -f), -sgn_s * f)
         q_rot = np.where(bottom, 0.0, sgn_w * sgn_s)
-        r_rot = np.where(bottom, f_rot, -q_rot * g_rot)
+        r_rot = np.where(bottom, f, -q_rot * f)
     q = np.where(lib, q_lib, np.where(rot, q_rot, 0.0))
     rem = np.where(lib, r_lib, np.where(rot, r_rot, 0.0))
     return q, rem

@@ -1,0 +1,106 @@
+"""From initial states to everything a Motion holds, in chunks of a few thousand states.
+
+Working on a few thousand states at a time keeps every temporary of the double-double
+classification in the processor's cache (and below the size at which the allocator maps
+fresh pages for each one), which makes a large ensemble several times faster than one pass.
+Each state is computed on its own, so the chunking changes no bit of any result.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from . import _dd, _flow, _landen
+from .regimes import LIBRATION, REST, ROTATION, SEPARATRIX, classify, phases
+
+__all__ = ["solve"]
+
+CHUNK = 4096
+
+
+def _reject(bad: np.ndarray, message: str) -> None:
+    if np.any(bad):
+        raise ValueError(message)
+
+
+def _chunk(th, v, w0):
+    """Return the public values and the Params of 1-D arrays of states.
+
+    The public values: theta0, dtheta0, omega0, c1, modulus, complement, amplitude, phase,
+    direction, period, beta.
+    """
+    st = classify(th, v, w0)
+    code = st.code
+    elliptic = (code == LIBRATION) | (code == ROTATION)
+    _reject(~(st.rate < 1e290), "dtheta0 / omega0 and omega0 are too large together: the "
+            "rate omega0 * max(1, |dtheta0| / (2 omega0)) must stay below 1e290")
+    # Only a push of under 1e-300 rad/s at the very top gets here: kc would be subnormal
+    # and K = log(4/kc) (hence the period) would lose its digits.
+    _reject(elliptic & (st.mod_c < 1e-300), "dtheta0 is too small for a state this close to "
+            "the top: the complementary modulus falls below 1e-300; use dtheta0 = 0 (balanced "
+            "at the top) or |dtheta0| >= 2e-300 * omega0")
+    with np.errstate(all="ignore"):
+        # c1 = 2 w0^2 beta in double-double, rounded once. Where that leaves the range of
+        # the exact products (a tiny or huge omega0), c1 = theta'^2 - 2 w0^2 cos r has no
+        # cancellation left to fear: one of its terms dominates.
+        c1 = _dd.mul(*_dd.two_prod(w0, 2.0 * w0), st.beta, st.beta_lo)[0]
+        c1 = np.where(np.isfinite(c1) & (w0 > 2.0 ** -400) & (w0 < 2.0 ** 400), c1,
+                      v * v - 2.0 * w0 * w0 * (st.c - st.s) * (st.c + st.s))
+    _reject(~np.isfinite(c1), "dtheta0 is too large: the energy constant "
+            "c1 = dtheta0**2 - 2 omega0**2 cos(theta0) would overflow (|dtheta0| < 1e154)")
+    landen = _landen.constants(np.where(elliptic, st.mod_c, 1.0),
+                               np.where(elliptic, st.mod_c_lo, 0.0))
+    quarter = landen.quarter
+    quarters, rem = phases(st, quarter)
+    lib, rot, sep = code == LIBRATION, code == ROTATION, code == SEPARATRIX
+    still = (code == REST) | (sep & (st.w == 0))
+    sigma = np.where((sep | rot) & (st.w < 0), -1.0, 1.0)
+    with np.errstate(all="ignore"):  # branches that np.where drops may divide by zero
+        x0 = sigma * np.arcsinh(st.s / st.c)
+        phase = np.where(elliptic, quarters * quarter + rem, np.where(sep & ~still, x0, 0.0))
+        gamma = 1.0 / st.k
+        period = np.where(lib, 4.0 * quarter / w0,
+                          np.where(rot, 2.0 * quarter / st.rate, 2.0 * math.pi / w0))
+    period = np.where(sep, math.inf, period)
+    modulus = np.where(lib, st.k, np.where(rot, gamma, np.where(sep, 1.0, 0.0)))
+    complement = np.where(elliptic, st.mod_c, np.where(sep, 0.0, 1.0))
+    amplitude = np.where(lib, 2.0 * np.arctan2(st.k, st.mod_c),
+                         np.where(rot, math.inf, np.where(sep, math.pi, 0.0)))
+    p = _flow.Params(code, still, th, st.turns, w0, sigma, np.where(lib, st.k, 0.0), st.s,
+                     st.c, np.where(elliptic, st.rate, 0.0), np.where(elliptic, st.rate_lo, 0.0),
+                     quarters, rem, landen)
+    public = [th, v, w0, c1, modulus, complement, amplitude, phase, sigma.astype(int),
+              period, st.beta]
+    return public, p
+
+
+def _pad(levels, n):
+    # Repeating the last level (where every element has b = a) is an exact identity of the
+    # Landen recurrence, so chunks that converged in fewer steps can share one length.
+    return tuple(levels) + (levels[-1],) * (n - len(levels))
+
+
+def solve(th, v, w0):
+    """Return the public values and Params of states of any shape (th, v, w0 broadcast)."""
+    shape = th.shape
+    size = th.size
+    if size <= CHUNK:
+        public, p = _chunk(th, v, w0)
+        return public, p
+    flat = [np.ravel(x) for x in (th, v, w0)]
+    parts = [_chunk(*(x[i:i + CHUNK] for x in flat)) for i in range(0, size, CHUNK)]
+    levels = max(len(p.landen.mu) for _, p in parts)
+
+    def join(arrays):
+        return np.concatenate(arrays).reshape(shape)
+
+    public = [join([pub[j] for pub, _ in parts]) for j in range(len(parts[0][0]))]
+    scalars = [join([p[j] for _, p in parts]) for j in range(13)]
+    c = [join([p.landen[j] for _, p in parts]) for j in range(6)]
+    mu = [join(column) for column in zip(*(_pad(p.landen.mu, levels) for _, p in parts),
+                                         strict=True)]
+    nu = [join(column) for column in zip(*(_pad(p.landen.nu, levels) for _, p in parts),
+                                         strict=True)]
+    return public, _flow.Params(*scalars, _landen.Constants(*c, tuple(mu), tuple(nu)))
