@@ -17,7 +17,7 @@ from typing import Any, NamedTuple
 import numpy as np
 
 from . import _landen
-from ._landen import _two_prod, _two_sum
+from ._landen import _PI_HI, _PI_LO, _two_prod, _two_sum
 from .regimes import LIBRATION, ROTATION, SEPARATRIX
 
 __all__ = ["Params", "evaluate", "CHUNK"]
@@ -34,25 +34,29 @@ class Params(NamedTuple):
     turns: np.ndarray
     omega0: np.ndarray
     sigma: np.ndarray     # direction +-1 (III, IV); +1 otherwise
-    k: np.ndarray         # alpha (II); used in theta = 2 atan2(alpha sn, dn)
-    s: np.ndarray         # sin(r/2), cos(r/2) of the initial state (III)
+    k: np.ndarray         # sqrt(s^2 + w^2): alpha (II), 1/gamma (IV)
+    s: np.ndarray         # sin(r/2), cos(r/2) and theta'/(2 omega0) of the initial state
     c: np.ndarray
+    w: np.ndarray
     rate: np.ndarray      # d(argument)/dt as a double-double; 0 outside II and IV
     rate_lo: np.ndarray
-    quarters: np.ndarray  # the argument at t = 0 is quarters K + rem
+    quarters: np.ndarray  # the argument at t = 0 as quarters K + rem (|rem| <~ K/2), exactly
     rem: np.ndarray
     landen: _landen.Constants
 
 
+_N = len(Params._fields) - 1  # the per-state arrays before the Landen constants
+
+
 def _pieces(p: Params) -> list[Any]:
     c = p.landen
-    return [*p[:13], c.kc, c.quarter, c.k_hi, c.k_mid, c.k_lo, c.scale, *c.mu, *c.nu]
+    return [*p[:_N], c.kc, c.quarter, c.k_hi, c.k_mid, c.k_lo, c.scale, *c.mu, *c.nu]
 
 
 def _unpieces(pieces: list[Any], levels: int) -> Params:
-    c = _landen.Constants._make([*pieces[13:19], tuple(pieces[19:19 + levels]),
-                                 tuple(pieces[19 + levels:])])
-    return Params._make([*pieces[:13], c])
+    c = _landen.Constants._make([*pieces[_N:_N + 6], tuple(pieces[_N + 6:_N + 6 + levels]),
+                                 tuple(pieces[_N + 6 + levels:])])
+    return Params._make([*pieces[:_N], c])
 
 
 def _kernel(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool):
@@ -65,26 +69,32 @@ def _kernel(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool):
         if not fine:
             raise ValueError("t is too large: |omega0 t| must stay below about 1e290 "
                              "(the elliptic argument grows like omega0 t)")
-        # u = rate t + rem (+ quarters K) as a double-double: the phase survives thousands
-        # of periods, and at t = 0 it is the exact remainder.
+        # tau = rate t as a double-double (rate is known to 1e-32): the phase survives
+        # thousands of periods. The argument is u = u0 + tau with sn, cn, dn of u0 known
+        # exactly from the initial state, joined to those of tau by the addition theorem:
+        # at t = 0 the initial state itself comes back.
         a, a_lo = _two_prod(p.rate, t)
-        u, u_lo = _two_sum(a, p.rem)
-        u_lo = u_lo + (a_lo + p.rate_lo * t)
         any_rot = bool(np.any(rot))
-        sn, cn, dn, am = _landen.evaluate(u, p.landen, u_lo, amplitude=any_rot, name="t",
-                                          quarters=p.quarters)
-        if want_theta:
-            # (25) as theta / 2 = atan2(alpha sn, dn): arcsin near 1 would halve the digits;
-            # (46): theta = +-2 am.
-            half = np.arctan2(p.k * sn, dn)
+        sn, cn, dn, am = _landen.evaluate(a, p.landen, a_lo + p.rate_lo * t,
+                                          amplitude="split" if any_rot else False, name="t")
+        redo = None
+        # Each formula runs over the whole chunk and np.where keeps it where its regime is:
+        # elsewhere (a state at rest, say) it may divide 0 by 0, harmlessly.
+        with np.errstate(invalid="ignore", divide="ignore"):
+            if np.any(lib):
+                theta, dtheta, redo = _libration(p, sn, cn, dn, want_theta, want_dtheta)
             if any_rot:
-                half = np.where(rot, p.sigma * am, half)
-            theta = p.turns + 2.0 * half
-        if want_dtheta:
-            dtheta = 2.0 * p.rate * np.where(rot, p.sigma * dn, p.k * cn)
+                th_r, dth_r, redo_r = _rotation(p, sn, cn, dn, am, want_theta, want_dtheta)
+        if any_rot:
+            theta = th_r if theta is None else np.where(rot, th_r, theta)
+            dtheta = dth_r if dtheta is None else np.where(rot, dth_r, dtheta)
+            redo = redo_r if redo is None else np.where(rot, redo_r, redo)
+        if want_theta and np.any(redo & (lib | rot)):
+            theta = _direct(p, t, (a, a_lo), redo & (lib | rot), theta)
     sep = (p.code == SEPARATRIX) & ~p.still
     if np.any(sep):
-        th_s, dth_s = _separatrix(p, t)
+        with np.errstate(invalid="ignore", divide="ignore"):  # as above, for other regimes
+            th_s, dth_s = _separatrix(p, t)
         theta = th_s if theta is None else np.where(sep, th_s, theta)
         dtheta = dth_s if dtheta is None else np.where(sep, dth_s, dtheta)
     shape = np.broadcast_shapes(np.shape(t), np.shape(p.code))
@@ -94,6 +104,93 @@ def _kernel(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool):
         theta = np.where(p.still, p.theta0, theta)
         dtheta = np.where(p.still, 0.0, dtheta)
     return theta, dtheta
+
+
+def _libration(p: Params, sn, cn, dn, want_theta: bool, want_dtheta: bool):
+    """(25) at u0 + tau, with sn u0 = s/alpha, cn u0 = w/alpha, dn u0 = c (DLMF 22.8.1-3).
+
+    theta/2 = atan2(alpha sn u, dn u): arcsin near 1 would halve the digits. The common
+    denominator 1 - alpha^2 sn^2 u0 sn^2 tau = c^2 + s^2 cn^2 tau has no cancellation.
+    """
+    s, c, w = p.s, p.c, p.w
+    theta = dtheta = redo = None
+    if want_theta:
+        first, second = s * cn * dn, w * c * sn
+        y = first + second                 # alpha sn(u) times the denominator
+        x = c * dn - s * w * sn * cn       # dn(u) times the denominator
+        theta = p.turns + 2.0 * np.arctan2(y, x)
+        # Where the two terms cancel, theta is near 0 and loses relative digits: redone there.
+        redo = np.abs(y) < (np.abs(first) + np.abs(second)) * (1.0 / 64.0)
+    if want_dtheta:                        # theta' = 2 w0 alpha cn(u)
+        dtheta = 2.0 * p.omega0 * (w * cn - s * c * sn * dn) / (c * c + s * s * cn * cn)
+    return theta, dtheta, redo
+
+
+def _rotation(p: Params, sn, cn, dn, am, want_theta: bool, want_dtheta: bool):
+    """(46) at u0 + tau, with sn u0 = sigma s, cn u0 = c, dn u0 = d0 = |w|/k (modulus 1/k).
+
+    am(u) = am(tau) + delta, delta in (-pi, pi) from sin and cos of am(u) - am(tau) by the
+    addition theorem; d0 - 1 = -s^2 / (k (|w| + k)) without cancellation.
+    """
+    s, c, w, k, sigma = p.s, p.c, p.w, p.k, p.sigma
+    aw = np.abs(w)
+    theta = dtheta = redo = None
+    if want_theta:
+        d0 = aw / k
+        d0m1 = -(s / k) * (s / (aw + k))
+        spread = cn * cn + d0 * sn * sn
+        y = sigma * s * dn * spread + c * sn * cn * d0m1
+        x = c * spread - sigma * s * sn * cn * dn * d0m1
+        delta = np.arctan2(y, x)
+        quarters, rest = am
+        theta, small = _turned(p, quarters, rest + delta)
+        redo = np.abs(small) < (np.abs(rest) + np.abs(delta)) * (1.0 / 64.0)
+    if want_dtheta:                        # theta' = +-2 (w0 / gamma) dn(u)
+        # divided through by k^2, which may be huge when omega0 is tiny
+        d0, s_k = aw / k, s / k
+        dn_u = (d0 * dn - sigma * s_k * (c / k) * sn * cn) / (d0 * d0 + s_k * s_k * cn * cn)
+        dtheta = sigma * 2.0 * p.rate * dn_u
+    return theta, dtheta, redo
+
+
+def _turned(p: Params, quarters, rest):
+    """Theta = 2 pi m + sigma 2 (quarters pi/2 + rest) with the multiple of pi added exactly.
+
+    N pi (N = 2 m + sigma quarters) as a double-double, so that a theta near 0 after many
+    turns keeps its relative digits. Returns theta and its part beside N pi's double.
+    """
+    count = 2.0 * np.rint(p.turns / (2.0 * _PI_HI)) + p.sigma * quarters
+    big, err = _two_prod(count, _PI_HI)
+    small = (err + count * _PI_LO) + p.sigma * 2.0 * rest
+    return big + small, small
+
+
+def _direct(p: Params, t, tau, redo, theta):
+    """Theta at the points ``redo`` from u = tau + rem + quarters K, reduced exactly.
+
+    Near theta = 0 (mod 2 pi) the addition theorem cancels; there the argument itself, with
+    the phase held as whole quarter periods plus an exact remainder, gives sn(u) (II) and
+    am(u) (IV) to full relative accuracy. Only these few points are evaluated again.
+    """
+    shape = theta.shape
+    mask = np.broadcast_to(redo, shape)
+
+    def pick(x):
+        return np.broadcast_to(x, shape)[mask]
+
+    c = p.landen
+    landen = _landen.Constants._make([*(pick(x) for x in c[:6]), tuple(pick(x) for x in c.mu),
+                                      tuple(pick(x) for x in c.nu)])
+    u, u_lo = _two_sum(pick(tau[0]), pick(p.rem))
+    u_lo = u_lo + pick(tau[1] + p.rate_lo * t)
+    sn, _, dn, (quarters, rest) = _landen.evaluate(u, landen, u_lo, amplitude="split",
+                                                   name="t", quarters=pick(p.quarters))
+    sub = Params._make([*(pick(x) for x in p[:_N]), landen])
+    turned, _ = _turned(sub, quarters, rest)
+    direct = np.where(sub.code == LIBRATION, sub.turns + 2.0 * np.arctan2(sub.k * sn, dn), turned)
+    theta = np.array(theta)  # a writable copy (a 0-d result may be a numpy scalar)
+    theta[mask] = direct
+    return theta
 
 
 def _separatrix(p: Params, t: np.ndarray):
@@ -117,7 +214,16 @@ def _separatrix(p: Params, t: np.ndarray):
 
 
 def evaluate(p: Params, t: np.ndarray, want_theta: bool = True, want_dtheta: bool = True):
-    """theta(t) and theta'(t) (either None if not wanted), of shape broadcast(S, t.shape)."""
+    """theta(t) and theta'(t) (either None if not wanted), of shape broadcast(S, t.shape).
+
+    Underflow to zero or a subnormal is the right answer here (theta' far along the
+    separatrix, a tiny amplitude): it raises nothing even under np.seterr(all="raise").
+    """
+    with np.errstate(under="ignore"):
+        return _evaluate(p, t, want_theta, want_dtheta)
+
+
+def _evaluate(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool):
     shape = np.broadcast_shapes(np.shape(p.code), t.shape)
     size = math.prod(shape)
     if size <= CHUNK:

@@ -105,9 +105,10 @@ def _scalar_constants(kc: float, kc_lo: float) -> Constants:
 
 def constants(kc: Any, kc_lo: Any = 0.0) -> Constants:
     """Landen constants for kc (+ kc_lo); cached for a scalar kc (one modulus, many u)."""
-    if np.ndim(kc) == 0 and np.ndim(kc_lo) == 0:
-        return _scalar_constants(float(kc), float(kc_lo))
-    return _constants(kc, kc_lo)
+    with np.errstate(under="ignore"):  # a tiny kc_lo squared underflows, harmlessly
+        if np.ndim(kc) == 0 and np.ndim(kc_lo) == 0:
+            return _scalar_constants(float(kc), float(kc_lo))
+        return _constants(kc, kc_lo)
 
 
 def complement(k: Any) -> tuple[Any, Any]:
@@ -181,9 +182,11 @@ def core(v, c: Constants):
     return sn, cn, dn, cc
 
 
-def evaluate(u, c: Constants, u_lo=0.0, amplitude: bool = False, name: str = "u",
+def evaluate(u, c: Constants, u_lo=0.0, amplitude: bool | str = False, name: str = "u",
              quarters=0.0):
-    """sn, cn, dn (and am if ``amplitude``) at u + u_lo for kc in (0, 1].
+    """sn, cn, dn (and am if ``amplitude``; as (n, rest) if it is "split") at u + u_lo.
+
+    For kc in (0, 1].
 
     Reduces u by quarter periods, evaluates at |v| <= K/2 and shifts back by
     DLMF 22.4.3: sn(v + K) = cd v, cn(v + K) = -kc sd v, dn(v + K) = kc nd v,
@@ -205,6 +208,8 @@ def evaluate(u, c: Constants, u_lo=0.0, amplitude: bool = False, name: str = "u"
         return sn, cn, dn, None
     # am(v + n K) = n pi/2 + (am v, or arctan(kc sc v) for odd n); ratio = kc sc v.
     am = np.where(odd, np.arctan(ratio), np.arctan2(s, cn_v))
+    if amplitude == "split":  # am = n pi/2 + am, for a caller that adds n pi/2 exactly
+        return sn, cn, dn, (n, am)
     return sn, cn, dn, (n * (0.5 * _PI_HI) + am) + n * (0.5 * _PI_LO)
 
 

@@ -68,9 +68,9 @@ def _chunk(th, v, w0):
     complement = np.where(elliptic, st.mod_c, np.where(sep, 0.0, 1.0))
     amplitude = np.where(lib, 2.0 * np.arctan2(st.k, st.mod_c),
                          np.where(rot, math.inf, np.where(sep, math.pi, 0.0)))
-    p = _flow.Params(code, still, th, st.turns, w0, sigma, np.where(lib, st.k, 0.0), st.s,
-                     st.c, np.where(elliptic, st.rate, 0.0), np.where(elliptic, st.rate_lo, 0.0),
-                     quarters, rem, landen)
+    p = _flow.Params(code, still, th, st.turns, w0, sigma, np.where(elliptic, st.k, 1.0),
+                     st.s, st.c, st.w, np.where(elliptic, st.rate, 0.0),
+                     np.where(elliptic, st.rate_lo, 0.0), quarters, rem, landen)
     public = [th, v, w0, c1, modulus, complement, amplitude, phase, sigma.astype(int),
               period, st.beta]
     return public, p
@@ -83,7 +83,16 @@ def _pad(levels, n):
 
 
 def solve(th, v, w0):
-    """Return the public values and Params of states of any shape (th, v, w0 broadcast)."""
+    """Return the public values and Params of states of any shape (th, v, w0 broadcast).
+
+    Underflow (a tiny amplitude squared) is the right answer and raises nothing, even
+    under np.seterr(all="raise").
+    """
+    with np.errstate(under="ignore"):
+        return _solve(th, v, w0)
+
+
+def _solve(th, v, w0):
     shape = th.shape
     size = th.size
     if size <= CHUNK:
@@ -97,7 +106,7 @@ def solve(th, v, w0):
         return np.concatenate(arrays).reshape(shape)
 
     public = [join([pub[j] for pub, _ in parts]) for j in range(len(parts[0][0]))]
-    scalars = [join([p[j] for _, p in parts]) for j in range(13)]
+    scalars = [join([p[j] for _, p in parts]) for j in range(len(_flow.Params._fields) - 1)]
     c = [join([p.landen[j] for _, p in parts]) for j in range(6)]
     mu = [join(column) for column in zip(*(_pad(p.landen.mu, levels) for _, p in parts),
                                          strict=True)]

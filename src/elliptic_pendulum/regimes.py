@@ -208,8 +208,9 @@ def phases(st: State, quarter: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     sgn_s = np.where(s < 0, -1.0, 1.0)
     sgn_w = np.where(w < 0, -1.0, 1.0)
     with np.errstate(all="ignore"):  # the branch not taken may divide by zero; np.where drops it
-        # |sn| <= 1/sqrt(2) <= sn(K/2) = 1/sqrt(1 + kc): nearer the bottom than the turn.
-        bottom = np.where(lib, 2.0 * s * s <= k * k, 2.0 * s * s <= 1.0)
+        # |sn| < sn(K/2) = 1/sqrt(1 + kc): nearer the bottom than the turn (strictly, so that
+        # a state at the turn itself, where 1 + kc may round to 1, is counted there).
+        bottom = np.where(lib, s * s * (1.0 + kc) < k * k, s * s * (1.0 + kc) < 1.0)
         aw = np.abs(w)
         # One R_F per state, with the arguments of its branch:
         # II near the bottom: F(asin(s/k)) = (s/k) R_F((w/k)^2, c^2), from the upswing
