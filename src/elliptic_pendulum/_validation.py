@@ -65,20 +65,24 @@ def real_scalar(value: Any, name: str) -> float:
     return float(array)
 
 
-def modulus_pair(k: Any, kc: Any = None) -> tuple[np.ndarray, np.ndarray, Any]:
-    """Return (k, kc, kc_lo) as arrays, k and kc checked to lie in [0, 1].
+def modulus_pair(k: Any, kc: Any = None,
+                 beyond_one: bool = False) -> tuple[np.ndarray, np.ndarray, Any]:
+    """Return (|k|, kc, kc_lo) as arrays, k checked to lie in [-1, 1] and kc in [0, 1].
 
-    When ``kc`` is given it is trusted over ``k``, and taken as exact (kc_lo = 0):
-    near the separatrix k rounds to 1.0 while kc = sqrt(1 - k^2) still holds
-    every digit, so only kc drives the algorithms that are sensitive there.
-    From ``k`` alone, kc is formed as a double-double (hi, lo).
+    Everything here is even in k (it enters through k**2), so a negative k is taken as
+    |k|. With ``beyond_one`` (the Jacobi functions) |k| > 1 is let through, and its kc is
+    0: the caller uses the reciprocal modulus (DLMF 22.17). When ``kc`` is given it is
+    trusted over ``k``, and taken as exact (kc_lo = 0): near the separatrix k rounds to 1.0
+    while kc = sqrt(1 - k^2) still holds every digit, so only kc drives the algorithms that
+    are sensitive there. k and kc given as arrays must have one shape. From ``k`` alone, kc
+    is formed as a double-double (hi, lo).
     """
     if kc is None:
-        k = real_array(k, "k")
-        if np.any((k < 0) | (k > 1)):
-            raise ValueError("k (the modulus) must lie in [0, 1]; "
-                             "for k > 1 use the reciprocal modulus 1/k")
-        kc_hi, kc_lo = _landen.complement(k)
+        k = np.abs(real_array(k, "k"))
+        if not beyond_one and np.any(k > 1):
+            raise ValueError("k (the modulus) must lie in [-1, 1] here (the value is even in "
+                             "k, so [0, 1] in effect): for |k| > 1 it is complex")
+        kc_hi, kc_lo = _landen.complement(np.minimum(k, 1.0))
         return k, kc_hi, kc_lo
     kc = real_array(kc, "kc")
     if np.any((kc < 0) | (kc > 1)):
@@ -86,9 +90,13 @@ def modulus_pair(k: Any, kc: Any = None) -> tuple[np.ndarray, np.ndarray, Any]:
     if k is None:
         k = np.sqrt((1.0 - kc) * (1.0 + kc))
     else:
-        k = real_array(k, "k")
-        if np.any((k < 0) | (k > 1)):
-            raise ValueError("k (the modulus) must lie in [0, 1]")
+        k = np.abs(real_array(k, "k"))
+        if np.any(k > 1):
+            raise ValueError("k (the modulus) must lie in [-1, 1] when kc is given "
+                             "(kc = sqrt(1 - k**2) is real only there)")
+        if k.ndim and kc.ndim and k.shape != kc.shape:
+            raise ValueError(f"k and kc must have the same shape (or k be a single number, "
+                             f"since kc is trusted over it); got {k.shape} and {kc.shape}")
     return k, kc, 0.0
 
 
@@ -118,7 +126,7 @@ def positive_array(value: Any, name: str) -> np.ndarray:
     return array
 
 
-def scalar_or_array(result: np.ndarray, *inputs: np.ndarray) -> Any:
+def scalar_or_array(result: Any, *inputs: Any) -> Any:
     """Return a Python float when every input was a scalar, else the array.
 
     Python floats print as ``1.0`` under NumPy 2 (not ``np.float64(1.0)``),

@@ -33,138 +33,22 @@ R_F (DLMF 19.25.5) with 1 - k^2 z^2 written as (1 - z)(1 + z) + kc^2 z^2.
 
 from __future__ import annotations
 
-from typing import Any
-
 import numpy as np
-from scipy import special
+import numpy.typing as npt
 
-from . import _landen
+from . import _jacobi
+from ._integrals import complete_integral, incomplete_integral, inverse_integral
 from ._validation import modulus_pair, real_array, scalar_or_array
+
+# What the functions return: a Python float for scalar arguments, else an array.
+FloatOrArray = float | npt.NDArray[np.float64]
 
 __all__ = ["complete_integral", "incomplete_integral", "inverse_integral",
            "jacobi", "sn", "cn", "dn", "am"]
 
 
-def complete_integral(k: Any, kc: Any = None) -> Any:
-    r"""Complete elliptic integral of the first kind K1(k), the note's (18).
-
-    .. math:: K_1(k) = \int_0^1 \frac{ds}{\sqrt{(1-s^2)(1-k^2 s^2)}}
-              = \frac{\pi}{2\,\mathrm{AGM}(1, k_c)}
-
-    Parameters
-    ----------
-    k : array_like
-        Modulus in [0, 1] (the note's alpha). Ignored where ``kc`` is given.
-    kc : array_like, optional
-        Complementary modulus sqrt(1 - k**2) in [0, 1]; pass it near k = 1.
-
-    Returns
-    -------
-    float or ndarray
-        K1; ``inf`` at k = 1 (kc = 0).
-
-    Notes
-    -----
-    Gauss's arithmetic-geometric mean, seeded with kc and carried out in
-    double-double arithmetic (DLMF 19.8.5). Accurate to about one ulp.
-
-    Examples
-    --------
-    K1(0) = pi/2 (Proposition 1.3), and the AGM agrees with the integral:
-
-    >>> import math
-    >>> from scipy.integrate import quad
-    >>> complete_integral(0.0) == math.pi / 2
-    True
-    >>> k = 0.8
-    >>> integral, _ = quad(lambda t: (1 - k**2 * math.sin(t)**2) ** -0.5, 0, math.pi / 2)
-    >>> abs(complete_integral(k) - integral) < 1e-14
-    True
-
-    Near the separatrix only ``kc`` can say how close we are: k is 1.0 in
-    floating point here, so the parameter m = k**2 has lost everything, while
-    K1 from kc follows the logarithmic law K1 ~ log(4 / kc) (DLMF 19.12.1):
-
-    >>> from scipy.special import ellipk
-    >>> float(ellipk(1.0 - (1e-12) ** 2))
-    inf
-    >>> abs(complete_integral(1.0, kc=1e-12) - math.log(4 / 1e-12)) < 1e-14
-    True
-    """
-    k, kc, kc_lo = modulus_pair(k, kc)
-    return scalar_or_array(_landen.quarter_period(kc, kc_lo), kc)
-
-
-def incomplete_integral(z: Any, k: Any, kc: Any = None) -> Any:
-    r"""Incomplete elliptic integral of the first kind E1(z, k), the note's (17).
-
-    .. math:: E_1(z, k) = \int_0^z \frac{ds}{\sqrt{(1-s^2)(1-k^2 s^2)}}
-              = z\, R_F(1 - z^2,\ 1 - k^2 z^2,\ 1)
-
-    Parameters
-    ----------
-    z : array_like
-        Upper limit in [-1, 1].
-    k, kc : array_like
-        Modulus in [0, 1], or its complement kc = sqrt(1 - k**2) by keyword.
-
-    Returns
-    -------
-    float or ndarray
-        E1(z, k), an odd increasing function of z with E1(1, k) = K1(k).
-
-    References
-    ----------
-    DLMF 19.2.4 and 19.25.5 (Carlson's symmetric form).
-
-    Examples
-    --------
-    E1(z, 0) = arcsin(z) (Proposition 1.3) and E1(1, k) = K1(k):
-
-    >>> import math
-    >>> abs(incomplete_integral(0.5, 0.0) - math.asin(0.5)) <= math.ulp(math.asin(0.5))
-    True
-    >>> abs(incomplete_integral(1.0, 0.9) - complete_integral(0.9)) < 1e-15
-    True
-    """
-    z = real_array(z, "z")
-    if np.any(np.abs(z) > 1):
-        raise ValueError("z must lie in [-1, 1]: E1(z, k) is the note's integral (17) up to z")
-    k, kc, kc_lo = modulus_pair(k, kc)
-    # 1 - k^2 z^2 without cancellation at k ~ 1, z ~ 1.
-    y = (1.0 - z) * (1.0 + z) + (kc * z) ** 2
-    with np.errstate(divide="ignore", invalid="ignore"):
-        out = z * special.elliprf((1.0 - z) * (1.0 + z), y, 1.0)
-    # At z = +-1, E1 = +-K1 (18): from the AGM, which also holds where y underflows.
-    out = np.where(np.abs(z) == 1, z * _landen.quarter_period(kc, kc_lo), out)
-    return scalar_or_array(out, z, kc)
-
-
-def _jacobi(u: np.ndarray, kc: np.ndarray, kc_lo: Any = 0.0, amplitude: bool = False):
-    """sn, cn, dn (and am if asked) for validated float arrays; kc (+ kc_lo) in [0, 1]."""
-    c = _landen.constants(np.where(kc == 0, 1.0, kc), kc_lo)
-    # The edges k = 0 and kc = 0 are overwritten below, for any u: keep them out of the reduction.
-    edge = (kc == 0) | (kc == 1)
-    sn_, cn_, dn_, am_ = _landen.evaluate(np.where(edge, 0.0, u), c, amplitude=amplitude)
-    if np.any(kc == 0):
-        # kc = 0 is the separatrix: sn = tanh, cn = dn = sech, am = gd.
-        sech = _landen.sech(u)
-        sn_ = np.where(kc == 0, np.tanh(u), sn_)
-        cn_ = np.where(kc == 0, sech, cn_)
-        dn_ = np.where(kc == 0, sech, dn_)
-        if amplitude:
-            am_ = np.where(kc == 0, _landen.gudermannian(u), am_)
-    if np.any(kc == 1):
-        # k = 0: the circular functions, exactly.
-        sn_ = np.where(kc == 1, np.sin(u), sn_)
-        cn_ = np.where(kc == 1, np.cos(u), cn_)
-        dn_ = np.where(kc == 1, 1.0, dn_)
-        if amplitude:
-            am_ = np.where(kc == 1, u, am_)
-    return sn_, cn_, dn_, am_
-
-
-def jacobi(u: Any, k: Any, kc: Any = None) -> tuple[Any, Any, Any]:
+def jacobi(u: npt.ArrayLike, k: npt.ArrayLike,
+           kc: npt.ArrayLike | None = None) -> tuple[FloatOrArray, FloatOrArray, FloatOrArray]:
     r"""Jacobi's sn, cn and dn at once (cheaper than three calls).
 
     .. math:: \operatorname{sn}^2 u + \operatorname{cn}^2 u = 1, \qquad
@@ -201,13 +85,13 @@ def jacobi(u: Any, k: Any, kc: Any = None) -> tuple[Any, Any, Any]:
     True
     """
     u = real_array(u, "u")
-    k, kc, kc_lo = modulus_pair(k, kc)
-    s, c, d, _ = _jacobi(u, kc, kc_lo)
+    k, kc, kc_lo = modulus_pair(k, kc, beyond_one=True)
+    s, c, d, _ = _jacobi.values(u, k, kc, kc_lo)
     return (scalar_or_array(s, u, kc), scalar_or_array(c, u, kc),
             scalar_or_array(d, u, kc))
 
 
-def sn(u: Any, k: Any, kc: Any = None) -> Any:
+def sn(u: npt.ArrayLike, k: npt.ArrayLike, kc: npt.ArrayLike | None = None) -> FloatOrArray:
     r"""Jacobi's sn(u, k): the note's G-bar, the periodic extension (20) of G.
 
     .. math:: u = \int_0^{\operatorname{sn} u}
@@ -251,7 +135,7 @@ def sn(u: Any, k: Any, kc: Any = None) -> Any:
     return jacobi(u, k, kc)[0]
 
 
-def cn(u: Any, k: Any, kc: Any = None) -> Any:
+def cn(u: npt.ArrayLike, k: npt.ArrayLike, kc: npt.ArrayLike | None = None) -> FloatOrArray:
     r"""Jacobi's cn(u, k), with cn^2 = 1 - sn^2 and cn(0) = 1.
 
     .. math:: \operatorname{cn} u = \cos \operatorname{am} u
@@ -276,7 +160,7 @@ def cn(u: Any, k: Any, kc: Any = None) -> Any:
     return jacobi(u, k, kc)[1]
 
 
-def dn(u: Any, k: Any, kc: Any = None) -> Any:
+def dn(u: npt.ArrayLike, k: npt.ArrayLike, kc: npt.ArrayLike | None = None) -> FloatOrArray:
     r"""Jacobi's dn(u, k) = sqrt(1 - k^2 sn^2 u), between kc and 1.
 
     .. math:: \operatorname{dn} u = \frac{d}{du} \operatorname{am} u
@@ -303,7 +187,7 @@ def dn(u: Any, k: Any, kc: Any = None) -> Any:
     return jacobi(u, k, kc)[2]
 
 
-def am(u: Any, k: Any, kc: Any = None) -> Any:
+def am(u: npt.ArrayLike, k: npt.ArrayLike, kc: npt.ArrayLike | None = None) -> FloatOrArray:
     r"""Jacobi's amplitude am(u, k): the note's I-hat, the staircase extension (21).
 
     .. math:: \operatorname{am} u = \int_0^u \operatorname{dn} v \, dv, \qquad
@@ -330,41 +214,5 @@ def am(u: Any, k: Any, kc: Any = None) -> Any:
     True
     """
     u = real_array(u, "u")
-    k, kc, kc_lo = modulus_pair(k, kc)
-    return scalar_or_array(_jacobi(u, kc, kc_lo, amplitude=True)[3], u, kc)
-
-
-def inverse_integral(u: Any, k: Any, kc: Any = None) -> Any:
-    r"""Invert E1 on [-K1(k), K1(k)]: the note's G(u, k) (19).
-
-    .. math:: E_1(z, k) = u \iff z = G(u, k), \qquad |u| \le K_1(k)
-
-    G is sn restricted to one rising branch; Lemma 2.2 extends it to sn.
-
-    Parameters
-    ----------
-    u : array_like
-        In [-K1(k), K1(k)]; ValueError outside.
-    k, kc : array_like
-        Modulus, or its complement by keyword.
-
-    Returns
-    -------
-    float or ndarray
-        In [-1, 1].
-
-    Examples
-    --------
-    >>> K = complete_integral(0.8)
-    >>> inverse_integral(K, 0.8)
-    1.0
-    >>> abs(incomplete_integral(inverse_integral(0.7, 0.8), 0.8) - 0.7) < 1e-15
-    True
-    """
-    u = real_array(u, "u")
-    k, kc, kc_lo = modulus_pair(k, kc)
-    K = _landen.quarter_period(kc, kc_lo)
-    if np.any(np.abs(u) > K):
-        raise ValueError("u must lie in [-K1(k), K1(k)]: G is the inverse of E1 on that "
-                         "interval only (use sn for the extension to all u)")
-    return scalar_or_array(_jacobi(u, kc, kc_lo)[0], u, kc)
+    k, kc, kc_lo = modulus_pair(k, kc, beyond_one=True)
+    return scalar_or_array(_jacobi.values(u, k, kc, kc_lo, amplitude=True)[3], u, k, kc)

@@ -1,0 +1,83 @@
+"""The Jacobi functions on validated arrays: the edges first, then the Landen kernel.
+
+k = 0 gives sin, cos, 1 and kc = 0 gives tanh, sech, sech (DLMF 22.5(ii)), exactly, for any
+u. A modulus k > 1 goes through the reciprocal modulus mu = 1/k (DLMF 22.17.2-4):
+
+    sn(u, k) = mu sn(k u, mu),   cn(u, k) = dn(k u, mu),   dn(u, k) = cn(k u, mu),
+
+and am(u, k) = atan2(mu sn(k u, mu), dn(k u, mu)), bounded for k > 1. The product k u is
+kept as a double-double and mu_c = sqrt((k - 1)(k + 1)) / k is formed in double-double
+arithmetic, so the reduction by quarter periods is as exact as for k <= 1.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from . import _dd, _landen
+
+__all__ = ["values"]
+
+
+def _ordinary(u, kc, kc_lo, amplitude, u_lo=0.0):
+    """sn, cn, dn (and am) for kc (+ kc_lo) in [0, 1]."""
+    c = _landen.constants(np.where(kc == 0, 1.0, kc), np.where(kc == 0, 0.0, kc_lo))
+    # The edges k = 0 and kc = 0 are overwritten below, for any u: keep them out of the reduction.
+    edge = (kc == 0) | (kc == 1)
+    sn_, cn_, dn_, am_ = _landen.evaluate(np.where(edge, 0.0, u), c, np.where(edge, 0.0, u_lo),
+                                          amplitude=amplitude)
+    if np.any(kc == 0):
+        # kc = 0 is the separatrix: sn = tanh, cn = dn = sech, am = gd.
+        sech = _landen.sech(u)
+        sn_ = np.where(kc == 0, np.tanh(u), sn_)
+        cn_ = np.where(kc == 0, sech, cn_)
+        dn_ = np.where(kc == 0, sech, dn_)
+        if amplitude:
+            am_ = np.where(kc == 0, _landen.gudermannian(u), am_)
+    if np.any(kc == 1):
+        # k = 0: the circular functions, exactly.
+        sn_ = np.where(kc == 1, np.sin(u), sn_)
+        cn_ = np.where(kc == 1, np.cos(u), cn_)
+        dn_ = np.where(kc == 1, 1.0, dn_)
+        if amplitude:
+            am_ = np.where(kc == 1, u, am_)
+    return sn_, cn_, dn_, am_
+
+
+def _reciprocal(u, k, amplitude):
+    """DLMF 22.17 for k > 1 (elsewhere a harmless stand-in k = 2)."""
+    with np.errstate(over="ignore"):
+        fine = np.all(np.abs(k * u) <= 1e290)
+    if not fine:
+        raise ValueError("u is too large: k u must stay below 1e290 for k > 1")
+    x, x_lo = _dd.two_prod(k, u)
+    a, a_lo = _dd.two_sum(k, -1.0)
+    b, b_lo = _dd.two_sum(k, 1.0)
+    ph, pl = _dd.mul(a, a_lo, b, b_lo)
+    rh, rl = _dd.sqrt(ph, pl, np.sqrt)
+    mu_c, mu_c_lo = _dd.div(rh, rl, k, 0.0 * k)
+    mu = 1.0 / k
+    s, c, d, _ = _ordinary(x, mu_c, mu_c_lo, False, x_lo)
+    am = np.arctan2(mu * s, d) if amplitude else None
+    return mu * s, d, c, am
+
+
+def values(u, k, kc, kc_lo, amplitude=False):
+    """sn, cn, dn (and am if asked, else None) for validated float arrays.
+
+    k = |k| may exceed 1 only where kc is 0 (kc cannot be given for k > 1).
+    """
+    with np.errstate(under="ignore"):  # a subnormal or zero is the right answer there
+        return _values(u, k, kc, kc_lo, amplitude)
+
+
+def _values(u, k, kc, kc_lo, amplitude):
+    big = k > 1
+    sn_, cn_, dn_, am_ = _ordinary(u, kc, kc_lo, amplitude)
+    if np.any(big):
+        r = _reciprocal(np.where(big, u, 0.0), np.where(big, k, 2.0), amplitude)
+        sn_, cn_, dn_ = (np.where(big, x, y) for x, y in zip(r[:3], (sn_, cn_, dn_),
+                                                             strict=True))
+        if amplitude:
+            am_ = np.where(big, r[3], am_)
+    return sn_, cn_, dn_, am_
