@@ -103,7 +103,7 @@ def _times(parser: _Parser, start: float, stop: float, step: float) -> np.ndarra
 
 def _table() -> None:
     print(f"{'theta0/deg':>10}  {'R(theta0)':>10}  {'note':>6}")
-    ratios = period_ratio(np.radians(list(NOTE_TABLE)))
+    ratios = np.asarray(period_ratio(np.radians(list(NOTE_TABLE))))
     for (degrees, note), ratio in zip(NOTE_TABLE.items(), ratios, strict=True):
         print(f"{degrees:>10}  {ratio:>10.6f}  {note:>6.3f}")
 

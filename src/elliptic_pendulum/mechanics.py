@@ -10,13 +10,16 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
 from . import motion as _motion
 from ._validation import positive_scalar, scalar_or_array
 from .period import small_angle_period
+
+# A Python float for a scalar time, else an array.
+FloatOrArray = float | npt.NDArray[np.float64]
 
 __all__ = ["Pendulum"]
 
@@ -94,7 +97,7 @@ class Pendulum:
         """
         return small_angle_period(self.omega0)
 
-    def solve(self, theta0: Any, dtheta0: Any = 0.0) -> Any:
+    def solve(self, theta0: npt.ArrayLike, dtheta0: npt.ArrayLike = 0.0) -> _motion.Motion:
         r"""Solve for the exact motion from theta(0) = theta0, theta'(0) = dtheta0.
 
         .. math:: \theta'' = -\frac{g}{\ell}\sin\theta \quad (3)
@@ -123,7 +126,7 @@ class Pendulum:
         """
         return _motion.solve(theta0, dtheta0, omega0=self.omega0)
 
-    def _check(self, motion: Any) -> None:
+    def _check(self, motion: _motion.Motion) -> None:
         # A Motion solved for another omega0 would give tensions and energies of a pendulum
         # that is not this one, silently: refuse it.
         omega0 = getattr(motion, "omega0", None)
@@ -133,7 +136,8 @@ class Pendulum:
                 f"omega0=sqrt(g/length)={self.omega0!r}; use pendulum.solve(theta0, dtheta0)"
             )
 
-    def position(self, motion: Any, t: Any) -> tuple[Any, Any]:
+    def position(self, motion: _motion.Motion,
+                 t: npt.ArrayLike) -> tuple[FloatOrArray, FloatOrArray]:
         r"""Position (1) of the bob at time(s) t, with the pivot at the origin.
 
         .. math:: x = \ell\sin\theta(t), \qquad y = -\ell\cos\theta(t) \quad (1)
@@ -164,7 +168,7 @@ class Pendulum:
         x, y = self.length * np.sin(theta), -self.length * np.cos(theta)
         return scalar_or_array(x, theta), scalar_or_array(y, theta)
 
-    def tension(self, motion: Any, t: Any) -> Any:
+    def tension(self, motion: _motion.Motion, t: npt.ArrayLike) -> FloatOrArray:
         r"""Tension T of the rod at time(s) t, from (4).
 
         .. math:: (\theta')^2 = \frac{T}{\ell m} - \frac{g}{\ell}\cos\theta \quad (4)
@@ -200,7 +204,7 @@ class Pendulum:
         tension = self.mass * (self.length * dtheta**2 + self.g * np.cos(theta))
         return scalar_or_array(tension, theta)
 
-    def energy(self, motion: Any) -> float:
+    def energy(self, motion: _motion.Motion) -> float:
         r"""Total mechanical energy of the motion, kinetic plus potential (pivot at y = 0).
 
         .. math:: \frac{m}{2}|\mathbf{v}|^2 + m g y

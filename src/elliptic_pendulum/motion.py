@@ -117,6 +117,8 @@ class Motion:
     def theta(self, t: float) -> float: ...
     @overload
     def theta(self, t: npt.NDArray[Any] | list[float]) -> npt.NDArray[np.float64]: ...
+    @overload
+    def theta(self, t: ArrayLike) -> FloatOrArray: ...
 
     def theta(self, t: ArrayLike) -> FloatOrArray:
         """Return the angle theta(t) in radians; float, or an array of shape broadcast(S, t).
@@ -131,6 +133,8 @@ class Motion:
     def dtheta(self, t: float) -> float: ...
     @overload
     def dtheta(self, t: npt.NDArray[Any] | list[float]) -> npt.NDArray[np.float64]: ...
+    @overload
+    def dtheta(self, t: ArrayLike) -> FloatOrArray: ...
 
     def dtheta(self, t: ArrayLike) -> FloatOrArray:
         """Return the angular velocity theta'(t); float, or an array of shape broadcast(S, t)."""
@@ -170,7 +174,7 @@ class Motion:
         landen = _landen.Constants._make([*(pick(x) for x in c[:6]),
                                           tuple(pick(x) for x in c.mu),
                                           tuple(pick(x) for x in c.nu)])
-        sub = _flow.Params._make([*(pick(x) for x in p[:13]), landen])
+        sub = _flow.Params._make([*(pick(x) for x in p[:-1]), landen])
         return _build(*(pick(x) for x in (self.regime, self.theta0, self.dtheta0, self.omega0,
                                           self.energy_constant, self.modulus,
                                           self.complementary_modulus, self.amplitude,
@@ -191,7 +195,7 @@ def _build(*values: Any) -> Motion:
         regime = regime.item() if isinstance(regime, np.ndarray) else regime
         public = [regime, *(float(x) for x in public[1:9]), int(public[9]), float(public[10])]
         beta = float(beta)
-        p = _flow.Params._make([*(x[()] if isinstance(x, np.ndarray) else x for x in p[:13]),
+        p = _flow.Params._make([*(x[()] if isinstance(x, np.ndarray) else x for x in p[:-1]),
                                 p.landen])
     return Motion(*public, beta, p)  # type: ignore[call-arg]  # the 11 public values
 

@@ -8,12 +8,15 @@ first-order system. Nothing else in the package depends on it.
 from __future__ import annotations
 
 import math
-from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 from scipy import integrate as _integrate
 
 from ._validation import positive_scalar, real_array, real_scalar, scalar_or_array
+
+# A Python float for a scalar time, else an array.
+FloatOrArray = float | npt.NDArray[np.float64]
 
 __all__ = ["integrate"]
 
@@ -27,9 +30,9 @@ def _run(rhs, state, end, times, method, rtol, atol):
     return solution.y
 
 
-def integrate(theta0: Any, dtheta0: Any = 0.0, omega0: Any = 1.0, *, t: Any,
+def integrate(theta0: float, dtheta0: float = 0.0, omega0: float = 1.0, *, t: npt.ArrayLike,
               rtol: float = 1e-10, atol: float = 1e-12,
-              method: str = "DOP853") -> tuple[Any, Any]:
+              method: str = "DOP853") -> tuple[FloatOrArray, FloatOrArray]:
     r"""Solve the pendulum equation (3) numerically from an initial state, at the times t.
 
     .. math:: \theta'' = -\omega_0^2 \sin\theta, \qquad \theta(0) = \theta_0,\;

@@ -16,11 +16,15 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import numpy.typing as npt
 from scipy import optimize
 
 from ._landen import _PI_LO
 from ._validation import positive_scalar, real_array, scalar_or_array
 from .elliptic import complete_integral
+
+# What the functions return: a Python float for a scalar argument, else an array.
+FloatOrArray = float | npt.NDArray[np.float64]
 
 __all__ = ["agm_period", "crossing_angle", "period", "period_ratio", "small_angle_period"]
 
@@ -31,7 +35,7 @@ __all__ = ["agm_period", "crossing_angle", "period", "period_ratio", "small_angl
 _SMALLEST_DISTANCE = math.pi - math.nextafter(math.pi, 0.0) + _PI_LO
 
 
-def _checked(value, name, valid):
+def _checked(value: npt.ArrayLike, name: str, valid: str) -> np.ndarray:
     """``value`` as a finite float array; a NaN or infinity is reported with the valid range."""
     try:
         return real_array(value, name)
@@ -39,7 +43,7 @@ def _checked(value, name, valid):
         raise ValueError(f"{name} must be {valid}; got {value!r}") from None
 
 
-def _amplitudes(theta0):
+def _amplitudes(theta0: npt.ArrayLike) -> np.ndarray:
     valid = "an amplitude in radians with 0 <= theta0 < pi"
     theta0 = _checked(theta0, "theta0", valid)
     # The double np.pi lies 1.2e-16 below pi, but whoever passes it means the inverted pendulum,
@@ -49,7 +53,7 @@ def _amplitudes(theta0):
     return theta0
 
 
-def period_ratio(theta0):
+def period_ratio(theta0: npt.ArrayLike) -> FloatOrArray:
     r"""Ratio R of the period of a swing of amplitude theta0 to the small-angle period.
 
     .. math:: R(\theta_0) = \frac{K_1(\sin(\theta_0/2))}{K_1(0)}
@@ -109,14 +113,14 @@ def period_ratio(theta0):
     >>> bool(abs(period_ratio(np.pi - x) - 2 / np.pi * np.log(8 / distance)) < 1e-14)
     True
     """
-    theta0 = _amplitudes(theta0)
-    half = 0.5 * theta0
+    amplitudes = _amplitudes(theta0)
+    half = 0.5 * amplitudes
     k_integral = complete_integral(np.sin(half), kc=np.cos(half))
     # Dividing by the double pi/2 (not multiplying by 2/pi) gives R(0) == 1.0 exactly.
-    return scalar_or_array(np.asarray(k_integral) / (0.5 * math.pi), theta0)
+    return scalar_or_array(np.asarray(k_integral) / (0.5 * math.pi), amplitudes)
 
 
-def small_angle_period(omega0):
+def small_angle_period(omega0: float) -> float:
     r"""Period (8) of the linearised pendulum (5).
 
     .. math:: P_\ell = \frac{2\pi}{\omega_0} = 2\pi\sqrt{\frac{\ell}{g}}
@@ -142,7 +146,7 @@ def small_angle_period(omega0):
     return 2 * math.pi / positive_scalar(omega0, "omega0")
 
 
-def period(theta0, omega0=1.0):
+def period(theta0: npt.ArrayLike, omega0: float = 1.0) -> FloatOrArray:
     r"""Period (26) of a libration (regime II) of amplitude theta0.
 
     .. math:: P_{II} = \frac{4}{\omega_0} K_1\!\left(\sin\frac{\theta_0}{2}\right)
@@ -188,7 +192,7 @@ def _agm(a, b):
     return 0.5 * (a + b)
 
 
-def agm_period(theta0, omega0=1.0):
+def agm_period(theta0: npt.ArrayLike, omega0: float = 1.0) -> FloatOrArray:
     r"""Period (26) by Gauss's arithmetic-geometric mean, an independent check of (26).
 
     .. math:: P_{II} = \frac{2\pi}{\omega_0\,\mathrm{AGM}(1, \cos(\theta_0/2))}
@@ -222,9 +226,10 @@ def agm_period(theta0, omega0=1.0):
     >>> bool(np.allclose(agm_period(theta0), period(theta0), rtol=1e-14, atol=0))
     True
     """
-    theta0 = _amplitudes(theta0)
+    amplitudes = _amplitudes(theta0)
     omega0 = positive_scalar(omega0, "omega0")
-    return scalar_or_array(2 * math.pi / (omega0 * _agm(1.0, np.cos(0.5 * theta0))), theta0)
+    return scalar_or_array(2 * math.pi / (omega0 * _agm(1.0, np.cos(0.5 * amplitudes))),
+                           amplitudes)
 
 
 def _ratio_near_top(x):
@@ -233,7 +238,7 @@ def _ratio_near_top(x):
     return float(complete_integral(math.cos(0.5 * x), kc=math.sin(0.5 * x))) / (0.5 * math.pi)
 
 
-def crossing_angle(value):
+def crossing_angle(value: npt.ArrayLike) -> FloatOrArray:
     r"""Find the amplitude at which the period ratio R reaches a given value.
 
     Solves :math:`R(\theta_0) = \frac{2}{\pi} K_1(\sin(\theta_0/2)) = v` for
