@@ -83,7 +83,7 @@ def div(ah, al, bh, bl):
 
 
 def sqrt(ah, al, root):
-    """Square root of ah + al > 0; ``root`` is the square-root function for the type (math or np)."""
+    """Square root of ah + al > 0; ``root`` is math.sqrt or np.sqrt, for the type at hand."""
     x = root(ah)
     p, e = two_prod(x, x)
     r = ((ah - p) - e) + al
@@ -109,7 +109,7 @@ def _tables():
 
 
 def _series(zh, zl):
-    """sin z and cos z for a double-double |z| <= 1/64 + tiny, to about 1e-32 relative."""
+    """Sin z and cos z for a double-double |z| <= 1/64 + tiny, to about 1e-32 relative."""
     z2h, z2l = mul(zh, zl, zh, zl)
     # Beyond z^7/7! (3e-15 z) the terms fit in a double: z^8/8! <= 1e-20, z^9/9! <= 7e-25 z.
     z2 = z2h
@@ -136,7 +136,7 @@ def _series(zh, zl):
 
 
 def sincos(yh, yl, rint, take, tables=None):
-    """sin y and cos y, each a double-double, for a double-double 0 <= y <= pi/4 (+ an ulp).
+    """Sin y and cos y, each a double-double, for a double-double 0 <= y <= pi/4 (+ an ulp).
 
     y = j/32 + z with |z| <= 1/64: the table gives sin and cos of j/32, the series those of z,
     and the addition theorem joins them without cancellation (cos >= 0.7 here, and sin(j/32)
