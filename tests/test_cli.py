@@ -11,6 +11,7 @@ import sys
 import mpmath
 import pytest
 
+import elliptic_pendulum as ep
 from elliptic_pendulum.cli import main
 
 
@@ -140,3 +141,45 @@ def test_python_dash_m():
     result = subprocess.run([sys.executable, "-m", "elliptic_pendulum", "crossing", "0"],
                             capture_output=True, text=True, check=False)
     assert result.returncode == 2 and len(result.stderr.strip().splitlines()) == 1
+
+
+# --- issue 8, finding 7 -----------------------------------------------------------------------
+
+def test_negative_numbers_in_e_notation(capsys):
+    # "--dtheta0 -4e-1" was taken for an option ("expected one argument").
+    assert main(["solve", "--theta0", "10", "--dtheta0", "-4e-1", "--t", "0", "1", "1"]) == 0
+    out = capsys.readouterr().out
+    first = out.strip().splitlines()[2].split()
+    assert float(first[2]) == pytest.approx(-0.4)
+    assert main(["solve", "--theta0", "-1.5E+1", "--t", "0", "1", "1"]) == 0
+    assert float(capsys.readouterr().out.strip().splitlines()[2].split()[1]) == -15.0
+
+
+def test_version(capsys):
+    with pytest.raises(SystemExit) as info:
+        main(["--version"])
+    assert info.value.code == 0
+    assert ep.__version__ in capsys.readouterr().out
+
+
+def test_broken_pipe_is_quiet():
+    # "| head" closes the pipe early: no BrokenPipeError traceback on stderr.
+    code = ("import sys\n"
+            "from elliptic_pendulum.cli import main\n"
+            "sys.argv[0] = 'elliptic-pendulum'\n"
+            "raise SystemExit(main(['solve', '--theta0', '10', '--t', '0', '20000', '0.01']))")
+    proc = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE)
+    proc.stdout.read(100)
+    proc.stdout.close()
+    with proc.stderr:
+        stderr = proc.stderr.read().decode()
+    proc.wait(timeout=60)
+    assert "Traceback" not in stderr and "BrokenPipe" not in stderr, stderr
+
+
+def test_program_name_is_what_the_user_typed(monkeypatch, capsys):
+    monkeypatch.setattr(sys, "argv", ["/usr/bin/elliptic-pendulum"])
+    assert fail(capsys, "crossing", "0").startswith("elliptic-pendulum: error")
+    monkeypatch.setattr(sys, "argv", ["/x/elliptic_pendulum/__main__.py"])
+    assert fail(capsys, "crossing", "0").startswith("python -m elliptic_pendulum: error")

@@ -9,6 +9,8 @@ from __future__ import annotations
 
 import argparse
 import math
+import os
+import re
 import sys
 from collections.abc import Sequence
 
@@ -35,6 +37,12 @@ examples:
 
 
 class _Parser(argparse.ArgumentParser):
+    def __init__(self, *args, **kwargs) -> None:  # noqa: D107
+        super().__init__(*args, **kwargs)
+        # argparse takes "-4e-1" for an option (its pattern knows only -4 and -0.4), so that
+        # "--dtheta0 -4e-1" failed with "expected one argument": teach it e-notation.
+        self._negative_number_matcher = re.compile(r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$")
+
     def error(self, message: str) -> None:  # type: ignore[override]
         # argparse would print the whole usage first; one line that says what is wrong (and
         # where the help is) is easier to read in a classroom terminal.
@@ -49,10 +57,21 @@ def _frequency_options(parser: argparse.ArgumentParser) -> None:
                         help="gravitational acceleration with --length (default 9.80665)")
 
 
+def _prog() -> str:
+    """Return the name the user typed: ``python -m elliptic_pendulum`` or the script's."""
+    name = os.path.basename(sys.argv[0]) if sys.argv and sys.argv[0] else ""
+    if name in ("__main__.py", "-m", "-c", ""):
+        return "python -m elliptic_pendulum"
+    return name if name.startswith("elliptic") else "elliptic-pendulum"
+
+
 def _build_parser() -> _Parser:
-    parser = _Parser(prog="python -m elliptic_pendulum",
+    from . import __version__
+
+    parser = _Parser(prog=_prog(),
                      description="The exact simple pendulum via Jacobi elliptic functions.",
                      epilog=EXAMPLES, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     commands.add_parser("table", help="the note's table of R(theta0) = (2/pi) K(sin(theta0/2))",
                         description="R(theta0) to 6 decimals beside the note's 3 (section 4).")
@@ -171,6 +190,13 @@ def main(argv: Sequence[str] | None = None) -> int:
             _crossing(args)
         else:
             _solve(parser, args)
+        sys.stdout.flush()
     except (ValueError, TypeError) as error:  # the library's domain errors, for the user
         parser.error(str(error))
+    except BrokenPipeError:
+        # The reader went away (``... | head``): not an error of ours. Point stdout at
+        # devnull so that Python's own flush at exit does not raise again.
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        return 1
     return 0
