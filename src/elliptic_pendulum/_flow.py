@@ -174,9 +174,10 @@ def _direct(p: Params, t, tau, redo, theta):
     """
     shape = theta.shape
     mask = np.broadcast_to(redo, shape)
+    where = np.nonzero(mask)  # integer indices: gathering costs only as many as are redone
 
     def pick(x):
-        return np.broadcast_to(x, shape)[mask]
+        return np.broadcast_to(x, shape)[where]
 
     c = p.landen
     landen = _landen.Constants._make([*(pick(x) for x in c[:6]), tuple(pick(x) for x in c.mu),
@@ -189,7 +190,7 @@ def _direct(p: Params, t, tau, redo, theta):
     turned, _ = _turned(sub, quarters, rest)
     direct = np.where(sub.code == LIBRATION, sub.turns + 2.0 * np.arctan2(sub.k * sn, dn), turned)
     theta = np.array(theta)  # a writable copy (a 0-d result may be a numpy scalar)
-    theta[mask] = direct
+    theta[where] = direct
     return theta
 
 
