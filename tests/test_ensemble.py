@@ -172,3 +172,20 @@ def test_memory_of_theta_stays_near_its_result():
     finally:
         tracemalloc.stop()
     assert peak <= 4 * result.nbytes, peak / result.nbytes
+
+
+def test_repr_and_html_summary():
+    # Issue 10, item 8: a readable repr (one state, or the regimes of an array) and a table
+    # for Jupyter with the regime, c1, the amplitude (or gamma) and the period.
+    swing = ep.solve(0.5)
+    assert repr(swing).startswith("Motion(regime='II', theta0=0.5")
+    assert f"period={swing.period:.10g}" in repr(swing)
+    html = swing._repr_html_()
+    for word in ("II (libration)", "c1", "amplitude", "period", f"{swing.period:.10g}"):
+        assert word in html
+    turning = ep.solve(0.0, 3.0)._repr_html_()
+    assert "gamma" in turning and "amplitude" not in turning
+    assert "time per revolution" in turning
+    many = ep.solve([0.5, 0.0, 0.1], [0.0, 3.0, 0.0])
+    assert repr(many) == "Motion(shape=(3,), regimes={'II': 2, 'IV': 1})"
+    assert "regime II (libration)</th><td style='text-align:left'>2" in many._repr_html_()
