@@ -15,8 +15,6 @@ IV, evaluated so that no digit is lost near the bottom or the top:
 
 from __future__ import annotations
 
-import html
-import math
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 from typing import Any, overload
@@ -24,7 +22,7 @@ from typing import Any, overload
 import numpy as np
 import numpy.typing as npt
 
-from . import _flow, _landen, _states
+from . import _display, _flow, _landen, _states
 from ._validation import positive_array, real_array, scalar_or_array
 from .regimes import (
     REGIMES,
@@ -157,27 +155,6 @@ class Motion:
         return (scalar_or_array(theta, t, self._p.code),
                 scalar_or_array(dtheta, t, self._p.code))
 
-    def _summary(self) -> list[tuple[str, str]]:
-        """(label, value) rows: regime, c1, amplitude or gamma, period; or counts for arrays."""
-        if self.shape != ():
-            counts = {r: int(np.count_nonzero(self._p.code == i)) for i, r in enumerate(REGIMES)}
-            rows = [("states", f"{int(np.prod(self.shape))} of shape {self.shape}")]
-            rows += [(f"regime {r.value} ({r.name.lower()})", str(n))
-                     for r, n in counts.items() if n]
-            return rows
-        regime = self.regime
-        rows = [("regime", f"{regime.value} ({regime.name.lower()})"),
-                ("theta0, theta0'", f"{self.theta0:.6g}, {self.dtheta0:.6g}"),
-                ("omega0", f"{self.omega0:.6g}"),
-                ("c1", f"{self.energy_constant:.10g}")]
-        if regime is Regime.ROTATION:
-            rows.append(("gamma", f"{self.modulus:.10g}"))
-            rows.append(("time per revolution", f"{self.period:.10g}"))
-        else:
-            rows.append(("amplitude", f"{self.amplitude:.10g}"))
-            rows.append(("period", "inf" if math.isinf(self.period) else f"{self.period:.10g}"))
-        return rows
-
     def __repr__(self) -> str:
         """Return a one-line summary: the initial state, its regime, c1, size and period.
 
@@ -194,24 +171,11 @@ class Motion:
         >>> solve([0.5, 0.0], [0.0, 3.0])
         Motion(shape=(2,), regimes={'II': 1, 'IV': 1})
         """
-        if self.shape != ():
-            counts = {r.value: int(np.count_nonzero(self._p.code == i))
-                      for i, r in enumerate(REGIMES)}
-            regimes = {k: n for k, n in counts.items() if n}
-            return f"Motion(shape={self.shape}, regimes={regimes})"
-        size = ("gamma", self.modulus) if self.regime is Regime.ROTATION else \
-            ("amplitude", self.amplitude)
-        fields = [("theta0", self.theta0), ("dtheta0", self.dtheta0), ("omega0", self.omega0),
-                  ("c1", self.energy_constant), size, ("period", self.period)]
-        return (f"Motion(regime='{self.regime.value}', "
-                + ", ".join(f"{k}={v:.10g}" for k, v in fields) + ")")
+        return _display.text(self)
 
     def _repr_html_(self) -> str:
         """Return a small HTML table for Jupyter: regime, c1, amplitude or gamma, period."""
-        body = "".join(f"<tr><th style='text-align:left'>{html.escape(k)}</th>"
-                       f"<td style='text-align:left'>{html.escape(v)}</td></tr>"
-                       for k, v in self._summary())
-        return f"<table><caption>elliptic_pendulum.Motion</caption>{body}</table>"
+        return _display.html(self)
 
     def __len__(self) -> int:
         """Return the number of states along the first axis of S."""
