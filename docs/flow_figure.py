@@ -23,6 +23,7 @@ OUT = Path(__file__).resolve().parent / "_static" / "flow.png"
 
 
 def main() -> None:
+    """Solve the cloud once, draw it at five instants, write the PNG."""
     rng = np.random.default_rng(2026)
     n = 10_000
     radius = 0.45 * np.sqrt(rng.random(n))

@@ -42,7 +42,8 @@ class Motion:
 
     A Motion holds one state (its attributes are Python floats) or an array of states of
     shape ``S`` (its attributes are arrays of that shape; ``regime`` an array of
-    :class:`Regime`). ``m[i]``, ``len(m)`` and iteration give the Motions of single states.
+    :class:`~elliptic_pendulum.regimes.Regime`). ``m[i]``, ``len(m)`` and iteration give
+    the Motions of single states.
 
     Attributes
     ----------
@@ -79,7 +80,7 @@ class Motion:
     direction: Any
     period: Any
     _beta: Any = field(repr=False)
-    _p: _flow.Params = field(repr=False)
+    _p: Any = field(repr=False)  # the evaluation's parameters (_flow.Params)
 
     @property
     def shape(self) -> tuple[int, ...]:

@@ -11,7 +11,7 @@ and w = theta' / (2 omega0), the squared modulus and its complement are
 .. math:: k^2 = s^2 + w^2, \qquad k_c^2 = 1 - k^2 = (c - |w|)(c + |w|),
 
 each free of cancellation (DESIGN.md, "Never lose the energy"). They are formed
-in double-double arithmetic (:mod:`._dd`, about 32 digits) from the exact doubles
+in double-double arithmetic (the private ``_dd``, about 32 digits) from the exact doubles
 of the initial state, elementwise on arrays: near the separatrix kc^2 = c^2 - w^2
 is a difference of nearly equal numbers, and rounding c or w to double first
 would be multiplied by 1 / kc^2 there. Regime II has modulus alpha = k (14);
@@ -23,7 +23,7 @@ upside down; every other angle is taken exactly as the double it is.
 
 No global state: states far outside the usual range (|theta0| beyond 2**20,
 |theta'/(2 omega0)| beyond 2**(+-300)) go through a private mpmath context made
-for the call (:mod:`._farstates`), never through ``mpmath.mp``.
+for the call (the private ``_farstates``), never through ``mpmath.mp``.
 """
 
 from __future__ import annotations
