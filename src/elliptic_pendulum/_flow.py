@@ -174,7 +174,8 @@ def _direct(p: Params, t, tau, redo, theta):
     """
     shape = theta.shape
     mask = np.broadcast_to(redo, shape)
-    where = np.nonzero(mask)  # integer indices: gathering costs only as many as are redone
+    # Integer indices: gathering costs only as many as are redone (a 0-d mask indexes itself).
+    where = np.nonzero(mask) if mask.ndim else mask
 
     def pick(x):
         return np.broadcast_to(x, shape)[where]
