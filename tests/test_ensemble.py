@@ -189,3 +189,24 @@ def test_repr_and_html_summary():
     many = ep.solve([0.5, 0.0, 0.1], [0.0, 3.0, 0.0])
     assert repr(many) == "Motion(shape=(3,), regimes={'II': 2, 'IV': 1})"
     assert "regime II (libration)</th><td style='text-align:left'>2" in many._repr_html_()
+
+
+def test_scalar_calls_give_the_array_bits():
+    # Item 6 (and the fast path of one number, _scalar): one state at one time, and sn, cn,
+    # dn, am of one u and k, give the very bits of the array call.
+    rng = np.random.default_rng(17)
+    theta0, dtheta0, omega0 = random_states(300, rng, near_fraction=0.2)
+    t = rng.uniform(-40.0, 40.0, theta0.size)
+    t[::7] = 0.0
+    m = ep.solve(theta0, dtheta0, omega0)
+    theta, dtheta = m.state(t)
+    for i in range(theta0.size):
+        one = m[i]
+        assert one.theta(float(t[i])) == theta[i]
+        assert one.dtheta(float(t[i])) == dtheta[i]
+        assert one.state(float(t[i])) == (theta[i], dtheta[i])
+    u, k = rng.uniform(-200.0, 200.0, 2000), rng.uniform(0.0, 1.0, 2000)
+    k[::5] = 1 - 10.0 ** rng.uniform(-16, -1, 400)
+    for f in (ep.sn, ep.cn, ep.dn, ep.am):
+        np.testing.assert_array_equal(f(u, k), [f(float(a), float(b)) for a, b in zip(u, k,
+                                                                                    strict=True)])

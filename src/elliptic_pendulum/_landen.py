@@ -43,14 +43,17 @@ def _chop(x):
 
 
 class Constants(NamedTuple):
-    """What the recurrence needs for one complementary modulus (or an array of them)."""
+    """What the recurrence needs for one complementary modulus (or an array of them).
 
-    kc: np.ndarray
-    quarter: np.ndarray  # K rounded to double
-    k_hi: np.ndarray   # K = k_hi + k_mid + k_lo (quarter period), n*k_hi and n*k_mid exact
-    k_mid: np.ndarray
-    k_lo: np.ndarray
-    scale: np.ndarray  # pi / (2 K) = M(1, kc)
+    Arrays, or Python floats on the fast path of one number (the private ``_scalar``).
+    """
+
+    kc: Any
+    quarter: Any  # K rounded to double
+    k_hi: Any   # K = k_hi + k_mid + k_lo (quarter period), n*k_hi and n*k_mid exact
+    k_mid: Any
+    k_lo: Any
+    scale: Any  # pi / (2 K) = M(1, kc)
     mu: tuple          # the AGM sequences a_0 = 1, ..., a_N and b_0 = kc, ..., b_N
     nu: tuple
 

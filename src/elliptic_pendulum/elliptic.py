@@ -36,7 +36,7 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
-from . import _jacobi
+from . import _jacobi, _scalar
 from ._integrals import complete_integral, incomplete_integral, inverse_integral
 from ._validation import modulus_pair, real_array, scalar_or_array
 
@@ -84,6 +84,10 @@ def jacobi(u: npt.ArrayLike, k: npt.ArrayLike,
     >>> abs(s**2 + c**2 - 1) < 1e-15 and abs(d**2 + 0.49 * s**2 - 1) < 1e-15
     True
     """
+    if kc is None and type(u) is float and type(k) is float:  # one number: the fast path
+        one = _scalar.jacobi(u, k)
+        if one is not None:
+            return one[0], one[1], one[2]
     u = real_array(u, "u")
     k, kc, kc_lo = modulus_pair(k, kc, beyond_one=True)
     s, c, d, _ = _jacobi.values(u, k, kc, kc_lo)
@@ -213,6 +217,10 @@ def am(u: npt.ArrayLike, k: npt.ArrayLike, kc: npt.ArrayLike | None = None) -> F
     >>> abs(math.sin(am(2.0, 0.5)) - sn(2.0, 0.5)) < 1e-15
     True
     """
+    if kc is None and type(u) is float and type(k) is float:  # one number: the fast path
+        one = _scalar.jacobi(u, k, amplitude=True)
+        if one is not None:
+            return one[3]
     u = real_array(u, "u")
     k, kc, kc_lo = modulus_pair(k, kc, beyond_one=True)
     return scalar_or_array(_jacobi.values(u, k, kc, kc_lo, amplitude=True)[3], u, k, kc)

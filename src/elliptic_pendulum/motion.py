@@ -15,6 +15,7 @@ IV, evaluated so that no digit is lost near the bottom or the top:
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 from typing import Any, overload
@@ -22,12 +23,9 @@ from typing import Any, overload
 import numpy as np
 import numpy.typing as npt
 
-from . import _display, _flow, _landen, _states
+from . import _display, _flow, _landen, _scalar, _states
 from ._validation import positive_array, real_array, scalar_or_array
-from .regimes import (
-    REGIMES,
-    Regime,
-)
+from .regimes import REGIMES, SEPARATRIX, Regime
 
 __all__ = ["Motion", "solve"]
 
@@ -127,6 +125,9 @@ class Motion:
         Any real t up to about 6.7e7 quarter periods (2**26) from 0; beyond, the
         reduction of the elliptic argument is not exact and a ValueError names t.
         """
+        if (type(t) is float and math.isfinite(t) and type(self._p.code) is int
+                and self._p.code != SEPARATRIX):  # one state at one time: the fast path
+            return _scalar.state(self._p, t, True, False)[0]
         t = real_array(t, "t")
         return scalar_or_array(_flow.evaluate(self._p, t, True, False)[0], t, self._p.code)
 
@@ -139,6 +140,9 @@ class Motion:
 
     def dtheta(self, t: ArrayLike) -> FloatOrArray:
         """Return the angular velocity theta'(t); float, or an array of shape broadcast(S, t)."""
+        if (type(t) is float and math.isfinite(t) and type(self._p.code) is int
+                and self._p.code != SEPARATRIX):  # one state at one time: the fast path
+            return _scalar.state(self._p, t, False, True)[1]
         t = real_array(t, "t")
         return scalar_or_array(_flow.evaluate(self._p, t, False, True)[1], t, self._p.code)
 
@@ -151,6 +155,9 @@ class Motion:
         >>> m.state(2.0) == (m.theta(2.0), m.dtheta(2.0))
         True
         """
+        if (type(t) is float and math.isfinite(t) and type(self._p.code) is int
+                and self._p.code != SEPARATRIX):  # one state at one time: the fast path
+            return _scalar.state(self._p, t)
         t = real_array(t, "t")
         theta, dtheta = _flow.evaluate(self._p, t)
         return (scalar_or_array(theta, t, self._p.code),
@@ -218,8 +225,13 @@ def _build(*values: Any) -> Motion:
         regime = regime.item() if isinstance(regime, np.ndarray) else regime
         public = [regime, *(float(x) for x in public[1:9]), int(public[9]), float(public[10])]
         beta = float(beta)
-        p = _flow.Params._make([*(x[()] if isinstance(x, np.ndarray) else x for x in p[:-1]),
-                                p.landen])
+        # Python scalars throughout, for the fast path of one state at one time (_scalar).
+        c = p.landen
+        landen = _landen.Constants._make([*(float(x) for x in c[:6]),
+                                          tuple(float(x) for x in c.mu),
+                                          tuple(float(x) for x in c.nu)])
+        p = _flow.Params._make([int(p.code), bool(p.still), *(float(x) for x in p[2:-1]),
+                                landen])
     return Motion(*public, beta, p)  # type: ignore[call-arg]  # the 11 public values
 
 
