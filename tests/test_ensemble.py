@@ -210,3 +210,19 @@ def test_scalar_calls_give_the_array_bits():
     for f in (ep.sn, ep.cn, ep.dn, ep.am):
         np.testing.assert_array_equal(f(u, k), [f(float(a), float(b)) for a, b in zip(u, k,
                                                                                     strict=True)])
+
+
+def test_scalar_solve_gives_the_array_bits():
+    # solve() of one state takes a fast path on Python floats; every public value and the
+    # motion itself must be the array call's, bit for bit (mutant: math.sin for the dd sine).
+    rng = np.random.default_rng(23)
+    theta0, dtheta0, omega0 = random_states(500, rng, near_fraction=0.2)
+    theta0[::9] = rng.uniform(-1e5, 1e5, theta0[::9].size)
+    dtheta0[::13] = 0.0
+    many = ep.solve(theta0, dtheta0, omega0)
+    names = ("regime", "energy_constant", "modulus", "complementary_modulus", "amplitude",
+             "phase", "direction", "period")
+    for i in range(theta0.size):
+        one, row = ep.solve(float(theta0[i]), float(dtheta0[i]), float(omega0[i])), many[i]
+        assert [getattr(one, n) for n in names] == [getattr(row, n) for n in names]
+        assert one.state(1.3) == row.state(1.3)

@@ -13,9 +13,24 @@ import math
 from functools import lru_cache
 
 import numpy as np
+from scipy import special
 
 from . import _landen
-from ._dd import PI_HI, PI_LO, mul, sqrt, two_prod, two_sum
+from ._dd import (
+    PI_HI,
+    PI_LO,
+    PI_LO2,
+    add,
+    div,
+    fast_two_sum,
+    mul,
+    mul_d,
+    sincos,
+    split,
+    sqrt,
+    two_prod,
+    two_sum,
+)
 
 __all__ = ["jacobi", "landen", "state"]
 
@@ -29,9 +44,7 @@ def _f(ufunc, *args):
 @lru_cache(maxsize=256)
 def landen(kc: float, kc_lo: float) -> _landen.Constants:
     """Return the Landen constants of one modulus as Python floats (cached)."""
-    c = _landen.constants(kc, kc_lo)
-    return _landen.Constants._make([*(float(x) for x in c[:6]), tuple(float(x) for x in c.mu),
-                                    tuple(float(x) for x in c.nu)])
+    return _agm(kc, kc_lo)
 
 
 def evaluate(u, c, u_lo=0.0, amplitude=False, name="u", quarters=0.0):
@@ -141,3 +154,145 @@ def jacobi(u: float, k: float, amplitude: bool = False):
     if kc == 1.0:
         return None  # k so small that kc rounds to 1: the circular edge, on the array path
     return evaluate(u, landen(kc, kc_lo), amplitude=amplitude)
+
+
+# --- one initial state: mirrors of regimes._near, _landen._constants, regimes.phases and
+# _states._chunk, for a state in the usual range (else None: the array path decides) -------
+
+_TWO_PI = (2 * PI_HI, 2 * PI_LO, 2 * PI_LO2)
+_TWO_PI_HI = split(_TWO_PI[0])
+
+
+def _minus_turns(th, m):
+    h, lo = th - m * _TWO_PI_HI[0], -m * _TWO_PI_HI[1]
+    rh, rl = two_sum(h, lo)
+    p, e = two_prod(m, _TWO_PI[1])
+    return add(rh, rl, -p, -e - m * _TWO_PI[2])
+
+
+def _half_angle(th):
+    m = float(round(th / _TWO_PI[0]))
+    rh, rl = _minus_turns(th, m)
+    over = 1.0 if rh > PI_HI else (-1.0 if rh < -PI_HI else 0.0)
+    if over != 0:
+        m = m + over
+        rh, rl = _minus_turns(th, m)
+    sign = -1.0 if rh < 0 else 1.0
+    ah, al = 0.5 * sign * rh, 0.5 * sign * rl
+    top = ah > 0.25 * PI_HI
+    dh, dl = add(0.5 * PI_HI, 0.5 * PI_LO, -ah, -al)
+    dl = dl + 0.5 * PI_LO2
+    yh, yl = (dh, dl) if top else (ah, al)
+    sh, sl, ch, cl = sincos(yh, yl, lambda x: float(round(x)), lambda t, j: t[int(j)])
+    s = (sign * ch, sign * cl) if top else (sign * sh, sign * sl)
+    c = (sh, sl) if top else (ch, cl)
+    p, e = two_prod(m, _TWO_PI[0])
+    turns = p + (e + m * _TWO_PI[1])
+    odd = 2.0 * math.floor(0.5 * (th / PI_HI + 1.0)) - 1.0
+    odd = 1.0 if odd == 0 else odd
+    p, e = two_prod(odd, PI_HI)
+    if th == p + (e + odd * PI_LO):
+        up = 1.0 if th > 0 else -1.0
+        m_odd = 0.5 * (odd - up)
+        p, e = two_prod(m_odd, _TWO_PI[0])
+        turns, s, c = p + (e + m_odd * _TWO_PI[1]), (up, 0.0), (0.0, 0.0)
+    return turns, s, c
+
+
+@lru_cache(maxsize=256)
+def _agm(kc: float, kc_lo: float) -> _landen.Constants:
+    a, b = 1.0, kc
+    done = abs(a - b) <= 4e-16 * (a + b)
+    mu, nu = [a], [a if done else b]
+    while not done:
+        a, b = 0.5 * (a + b), math.sqrt(a * b)
+        done = abs(a - b) <= 4e-16 * (a + b)
+        mu.append(a)
+        nu.append(a if done else b)
+    ah, al = 1.0, 0.0
+    bh, bl = fast_two_sum(kc, kc_lo + 0.0 * kc)
+    for _ in range(60):
+        dh, dl = two_sum(ah, -bh)
+        if abs(dh + (dl + al - bl)) <= 1e-31 * ah:
+            break
+        sh, sl = two_sum(ah, bh)
+        ph, pl = mul(ah, al, bh, bl)
+        gh, gl = sqrt(ph, pl, math.sqrt)
+        ah, al = fast_two_sum(0.5 * sh, 0.5 * (sl + al + bl))
+        bh, bl = gh, gl
+    kh, kl = div(0.5 * PI_HI + 0.0 * ah, 0.5 * PI_LO + 0.0 * ah, ah, al)
+    k_hi = split(kh)[0]
+    k_mid = split(kh - k_hi + kl)[0]
+    k_lo = (kh - k_hi - k_mid) + kl
+    return _landen.Constants(kc, kh + kl, k_hi, k_mid, k_lo, ah, tuple(mu), tuple(nu))
+
+
+def _rf(x, y):
+    return float(special.elliprf(x, y, 1.0))
+
+
+def solve(th: float, v: float, w0: float):
+    """Public values and Params (Python scalars) of one state, or None for the array path."""
+    if not 2.0 ** -300 < w0 < 2.0 ** 300:
+        return None
+    wh = v / (2.0 * w0)
+    if not ((th == 0 or 2.0 ** -300 < abs(th) < 2.0 ** 20)
+            and (v == 0 or 2.0 ** -300 <= abs(wh) < 2.0 ** 300)):
+        return None
+    turns, (sh, sl), (ch, cl) = _half_angle(th)
+    p, e = two_prod(wh, 2.0 * w0)
+    wl = ((v - p) - e) / (2.0 * w0)
+    k2 = add(*mul(sh, sl, sh, sl), *mul(wh, wl, wh, wl))
+    aw = -1.0 if wh < 0 else 1.0
+    kc2 = mul(*add(ch, cl, -aw * wh, -aw * wl), *add(ch, cl, aw * wh, aw * wl))
+    code = LIBRATION if kc2[0] > 0 else (ROTATION if kc2[0] < 0 else SEPARATRIX)
+    if sh == 0 and wh == 0:
+        return None  # at rest at the bottom: the array path
+    k = sqrt(k2[0], k2[1], math.sqrt)
+    beta = add(k2[0], k2[1], -kc2[0], -kc2[1])
+    if code == SEPARATRIX:
+        return None
+    kc = sqrt(abs(kc2[0]), -kc2[1] if kc2[0] < 0 else kc2[1], math.sqrt)
+    rot = code == ROTATION
+    mod_c = div(*kc, *k) if rot else kc
+    rate = mul_d(k[0], k[1], w0) if rot else (w0, 0.0)
+    if not (rate[0] < 1e290 and mod_c[0] >= 1e-300 and 2.0 ** -400 < w0 < 2.0 ** 400):
+        return None
+    c1 = mul(*two_prod(w0, 2.0 * w0), *beta)[0]
+    if not math.isfinite(c1):
+        return None
+    landen = _agm(*mod_c)
+    q, rem = _phase(sh, ch, wh, k[0], mod_c[0], rot)
+    quarter = landen.quarter
+    sigma = -1.0 if rot and wh < 0 else 1.0
+    if rot:
+        period, modulus, amplitude = 2.0 * quarter / rate[0], 1.0 / k[0], math.inf
+    else:
+        period, modulus = 4.0 * quarter / w0, k[0]
+        amplitude = 2.0 * float(np.arctan2(k[0], mod_c[0]))
+    public = [th, v, w0, c1, modulus, mod_c[0], amplitude, q * quarter + rem, int(sigma),
+              period, beta[0]]
+    params = (code, False, th, turns, w0, sigma, k[0], sh, ch, wh, rate[0], rate[1], q, rem,
+              landen)
+    return public, params
+
+
+def _phase(s, c, w, k, kc, rot):
+    """Mirror of regimes.phases for one state of regime II or IV."""
+    sgn_s = -1.0 if s < 0 else 1.0
+    sgn_w = -1.0 if w < 0 else 1.0
+    aw = abs(w)
+    if not rot:
+        if s * s * (1.0 + kc) < k * k:
+            x, y = w / k, c * c
+            f = (s / k) * _rf(x * x, y)
+            return (0.0, f) if w >= 0 else (2.0 * sgn_s, -f)
+        x, y = kc * s / (k * c), kc / c
+        f = (w / (k * c)) * _rf(x * x, y * y)
+        return sgn_s, -sgn_s * f
+    if s * s * (1.0 + kc) < 1.0:
+        y = w / k
+        return 0.0, (sgn_w * s) * _rf(c * c, y * y)
+    x, y = kc * s * k / aw, kc * k / aw
+    q = sgn_w * sgn_s
+    return q, -q * ((c * k / aw) * _rf(x * x, y * y))

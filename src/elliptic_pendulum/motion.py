@@ -18,7 +18,7 @@ from __future__ import annotations
 import math
 from collections.abc import Iterator
 from dataclasses import dataclass, field
-from typing import Any, overload
+from typing import Any, cast, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -240,6 +240,9 @@ def _reject(bad: np.ndarray, message: str) -> None:
         raise ValueError(message)
 
 
+_PLAIN = (float, int)  # exact types: a bool is refused on the array path
+
+
 def solve(theta0: ArrayLike, dtheta0: ArrayLike = 0.0, omega0: ArrayLike = 1.0) -> Motion:
     r"""Solve (3) exactly from the initial state (theta0, theta0') at t = 0.
 
@@ -294,6 +297,16 @@ def solve(theta0: ArrayLike, dtheta0: ArrayLike = 0.0, omega0: ArrayLike = 1.0) 
     >>> solve(math.pi).theta(100.0) == math.pi
     True
     """
+    if all(type(x) in _PLAIN for x in (theta0, dtheta0, omega0)):
+        try:
+            plain = [float(cast(float, x)) for x in (theta0, dtheta0, omega0)]
+        except OverflowError:  # an int beyond doubles: the array path says so
+            plain = []
+        one = _scalar.solve(*plain) if plain else None
+        if one is not None:  # one state in the usual range: the fast path, the same bits
+            public, params = one
+            return Motion(REGIMES[params[0]], *public,  # type: ignore[call-arg]
+                          _flow.Params(*params))
     th = real_array(theta0, "theta0")
     v = real_array(dtheta0, "dtheta0")
     w0 = positive_array(omega0, "omega0")
