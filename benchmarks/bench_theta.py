@@ -6,19 +6,27 @@ process, so the numbers compare across machines. The issue asks for a ratio to o
 scipy.special.ellipj call of at most 1.5 (goal 1.0).
 
     python benchmarks/bench_theta.py [--points 1000000] [--repeats 5]
+
+It first prints the engine's ratios of issue 8 (bench_engine.py: an ensemble of 1e5 states,
+one call on one number, the memory of theta(t)), so that `make bench` gives them all in one run.
 """
 
 from __future__ import annotations
 
 import argparse
 import math
+import sys
 import time
+from pathlib import Path
 
 import mpmath
 import numpy as np
 from scipy import integrate, special
 
 import elliptic_pendulum as ep
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import bench_engine  # noqa: E402  (its sibling script)
 
 MP_DPS = 40  # reference precision: far beyond double, so its own error is out of the picture
 
@@ -131,6 +139,12 @@ def main():
     rng = np.random.default_rng(20241206)
     print(f"numpy {np.__version__}, scipy {__import__('scipy').__version__}, "
           f"mpmath {mpmath.__version__}")
+    engine = argparse.Namespace(states=100_000, times=10, points=10_000_000,
+                                repeats=args.repeats)
+    print("\n== the engine (issue 8) ==")
+    bench_engine.ensemble(engine, np.random.default_rng(20261201))
+    bench_engine.scalars(engine)
+    bench_engine.memory(engine)
     for case in (Case("libration of 170 degrees", math.radians(170), 0.0),
                  Case("rotation, theta'(0) = 2.5 omega0", 0.0, 2.5)):
         report(case, args.points, args.repeats, rng)

@@ -113,3 +113,34 @@ def _solve(th, v, w0):
     nu = [join(column) for column in zip(*(_pad(p.landen.nu, levels) for _, p in parts),
                                          strict=True)]
     return public, _flow.Params(*scalars, _landen.Constants(*c, tuple(mu), tuple(nu)))
+
+
+def plain(values: list, p: _flow.Params) -> list:
+    """Return a Motion's fields (public values, beta, Params); Python scalars for one state.
+
+    Python scalars throughout a single state, for the fast path of one state at one time.
+    """
+    if np.ndim(p.code) != 0:
+        return [*values, p]
+    regime = values[0].item() if isinstance(values[0], np.ndarray) else values[0]
+    public = [regime, *(float(x) for x in values[1:9]), int(values[9]), float(values[10]),
+              float(values[11])]
+    c = p.landen
+    landen = _landen.Constants._make([*(float(x) for x in c[:6]),
+                                      tuple(float(x) for x in c.mu),
+                                      tuple(float(x) for x in c.nu)])
+    return [*public, _flow.Params._make([int(p.code), bool(p.still),
+                                         *(float(x) for x in p[2:-1]), landen])]
+
+
+def pick(values: tuple, p: _flow.Params, shape: tuple, index) -> list:
+    """Return the fields of the Motion of the states ``S[index]`` (see :func:`plain`)."""
+
+    def one(x):
+        return np.broadcast_to(x, shape)[index]
+
+    c = p.landen
+    landen = _landen.Constants._make([*(one(x) for x in c[:6]), tuple(one(x) for x in c.mu),
+                                      tuple(one(x) for x in c.nu)])
+    return plain([one(x) for x in values], _flow.Params._make([*(one(x) for x in p[:-1]),
+                                                               landen]))

@@ -23,7 +23,7 @@ from typing import Any, cast, overload
 import numpy as np
 import numpy.typing as npt
 
-from . import _display, _flow, _landen, _scalar, _states
+from . import _display, _flow, _scalar, _states
 from ._validation import positive_array, real_array, scalar_or_array
 from .regimes import REGIMES, SEPARATRIX, Regime
 
@@ -195,49 +195,15 @@ class Motion:
         """Return the Motion of the states ``S[index]``: one state for an integer index."""
         if self.shape == ():
             raise TypeError("a Motion of a single state cannot be indexed")
-        p = self._p
-        c = p.landen
-
-        def pick(x):
-            return np.broadcast_to(x, self.shape)[index]
-
-        landen = _landen.Constants._make([*(pick(x) for x in c[:6]),
-                                          tuple(pick(x) for x in c.mu),
-                                          tuple(pick(x) for x in c.nu)])
-        sub = _flow.Params._make([*(pick(x) for x in p[:-1]), landen])
-        return _build(*(pick(x) for x in (self.regime, self.theta0, self.dtheta0, self.omega0,
-                                          self.energy_constant, self.modulus,
-                                          self.complementary_modulus, self.amplitude,
-                                          self.phase, self.direction, self.period,
-                                          self._beta)), sub)
+        values = (self.regime, self.theta0, self.dtheta0, self.omega0, self.energy_constant,
+                  self.modulus, self.complementary_modulus, self.amplitude, self.phase,
+                  self.direction, self.period, self._beta)
+        return Motion(*_states.pick(values, self._p, self.shape, index))
 
     def __iter__(self) -> Iterator[Motion]:
         """Yield the Motions of the states along the first axis of S."""
         for i in range(len(self)):
             yield self[i]
-
-
-def _build(*values: Any) -> Motion:
-    """Make a Motion from its public values and Params; Python scalars for one state."""
-    *public, beta, p = values
-    if np.ndim(p.code) == 0:
-        regime = public[0]
-        regime = regime.item() if isinstance(regime, np.ndarray) else regime
-        public = [regime, *(float(x) for x in public[1:9]), int(public[9]), float(public[10])]
-        beta = float(beta)
-        # Python scalars throughout, for the fast path of one state at one time (_scalar).
-        c = p.landen
-        landen = _landen.Constants._make([*(float(x) for x in c[:6]),
-                                          tuple(float(x) for x in c.mu),
-                                          tuple(float(x) for x in c.nu)])
-        p = _flow.Params._make([int(p.code), bool(p.still), *(float(x) for x in p[2:-1]),
-                                landen])
-    return Motion(*public, beta, p)  # type: ignore[call-arg]  # the 11 public values
-
-
-def _reject(bad: np.ndarray, message: str) -> None:
-    if np.any(bad):
-        raise ValueError(message)
 
 
 _PLAIN = (float, int)  # exact types: a bool is refused on the array path
@@ -319,4 +285,4 @@ def solve(theta0: ArrayLike, dtheta0: ArrayLike = 0.0, omega0: ArrayLike = 1.0) 
     regime = np.empty(shape, dtype=object)
     for number, member in enumerate(REGIMES):
         regime[p.code == number] = member
-    return _build(regime, *public[:3], *public[3:], p)
+    return Motion(*_states.plain([regime, *public], p))
