@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -167,6 +168,14 @@ class Pendulum:
         theta = motion.theta(t)
         x, y = self.length * np.sin(theta), -self.length * np.cos(theta)
         return scalar_or_array(x, theta), scalar_or_array(y, theta)
+
+    @overload
+    def tension(self, motion: _motion.Motion, t: float) -> float: ...
+    @overload
+    def tension(self, motion: _motion.Motion,
+                t: npt.NDArray[Any] | list[float]) -> npt.NDArray[np.float64]: ...
+    @overload
+    def tension(self, motion: _motion.Motion, t: npt.ArrayLike) -> FloatOrArray: ...
 
     def tension(self, motion: _motion.Motion, t: npt.ArrayLike) -> FloatOrArray:
         r"""Tension T of the rod at time(s) t, from (4).
