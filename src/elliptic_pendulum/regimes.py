@@ -21,8 +21,8 @@ The double nearest an odd multiple of pi (``math.pi``, ``3 * math.pi``, ...) is
 taken to mean that multiple, so that ``solve(math.pi)`` is the pendulum balanced
 upside down; every other angle is taken exactly as the double it is.
 
-No global state: states far outside the usual range (|theta0| beyond 2**20,
-|theta'/(2 omega0)| beyond 2**(+-300)) go through a private mpmath context made
+No global state: states far outside the usual range (angles beyond 2**20 rad, or
+theta'/(2 omega0) beyond 2**(+-300) in size) go through a private mpmath context made
 for the call (the private ``_farstates``), never through ``mpmath.mp``.
 """
 
