@@ -29,7 +29,8 @@ def complete_integral(k: npt.ArrayLike, kc: npt.ArrayLike | None = None) -> Floa
     Parameters
     ----------
     k : array_like
-        Modulus in [0, 1] (the note's alpha). Ignored where ``kc`` is given.
+        Modulus in [-1, 1] (the note's alpha; K1 is even in k). Ignored where
+        ``kc`` is given.
     kc : array_like, optional
         Complementary modulus sqrt(1 - k**2) in [0, 1]; pass it near k = 1.
 
@@ -82,7 +83,8 @@ def incomplete_integral(z: npt.ArrayLike, k: npt.ArrayLike,
     z : array_like
         Upper limit in [-1, 1].
     k, kc : array_like
-        Modulus in [0, 1], or its complement kc = sqrt(1 - k**2) by keyword.
+        Modulus in [-1, 1] (E1 is even in k), or its complement
+        kc = sqrt(1 - k**2) by keyword.
 
     Returns
     -------

@@ -59,7 +59,9 @@ def jacobi(u: npt.ArrayLike, k: npt.ArrayLike,
     u : array_like
         Any real argument.
     k, kc : array_like
-        Modulus in [0, 1], or its complement kc by keyword (trusted over k).
+        Modulus, any real k: the functions are even in k, and |k| > 1 goes
+        through the reciprocal modulus (DLMF 22.17). Or its complement kc in
+        [0, 1] by keyword (trusted over k).
 
     Returns
     -------
@@ -82,6 +84,12 @@ def jacobi(u: npt.ArrayLike, k: npt.ArrayLike,
     --------
     >>> s, c, d = jacobi(1.2, 0.7)
     >>> abs(s**2 + c**2 - 1) < 1e-15 and abs(d**2 + 0.49 * s**2 - 1) < 1e-15
+    True
+
+    Above k = 1 (DLMF 22.17.2): sn(u, k) = sn(k u, 1/k) / k, and dn^2 + k^2 sn^2 = 1 still:
+
+    >>> s, c, d = jacobi(0.4, 2.5)
+    >>> abs(s - sn(1.0, 0.4) / 2.5) < 1e-16 and abs(d**2 + 6.25 * s**2 - 1) < 1e-15
     True
     """
     if kc is None and type(u) is float and type(k) is float:  # one number: the fast path
@@ -107,7 +115,8 @@ def sn(u: npt.ArrayLike, k: npt.ArrayLike, kc: npt.ArrayLike | None = None) -> F
     u : array_like
         Any real argument.
     k, kc : array_like
-        Modulus in [0, 1], or its complement kc = sqrt(1 - k**2) by keyword.
+        Modulus (any real k; see :func:`jacobi`), or its complement
+        kc = sqrt(1 - k**2) by keyword.
 
     Returns
     -------

@@ -217,25 +217,31 @@ def solve(theta0: ArrayLike, dtheta0: ArrayLike = 0.0, omega0: ArrayLike = 1.0) 
 
     Parameters
     ----------
-    theta0 : float
+    theta0 : float or array_like
         Initial angle in radians from the downward vertical; any real value
-        (2 pi m is carried along). ``math.pi`` means exactly upside down.
-    dtheta0 : float, default 0.0
+        (2 pi m is carried along). ``math.pi`` (the double nearest any odd
+        multiple of pi) means exactly upside down.
+    dtheta0 : float or array_like, default 0.0
         Initial angular velocity in rad per unit time; either sign.
-    omega0 : float, default 1.0
+    omega0 : float or array_like, default 1.0
         sqrt(g / l) of (6), > 0. With omega0 = 1, t is measured in units of
         sqrt(l / g).
+
+    The three broadcast (numpy rules) to the shape S of the states.
 
     Returns
     -------
     Motion
+        Of one state (Python floats) or of the array of states, each with its
+        own regime; each state is computed on its own, bit for bit as alone.
 
     Raises
     ------
     TypeError
         For a non-number.
     ValueError
-        For NaN, infinities or omega0 <= 0.
+        For NaN, infinities, omega0 <= 0, shapes that do not broadcast, or an
+        energy beyond the range of doubles (naming the parameter).
 
     Examples
     --------
@@ -257,6 +263,15 @@ def solve(theta0: ArrayLike, dtheta0: ArrayLike = 0.0, omega0: ArrayLike = 1.0) 
 
     >>> solve(0.0, 2.5).regime.value, solve(0.0, 2.0).regime.value
     ('IV', 'III')
+
+    Many states at once, one row of times per state:
+
+    >>> import numpy as np
+    >>> swings = solve(np.radians([10.0, 90.0, 170.0])[:, None])
+    >>> swings.theta(np.linspace(0.0, 1.0, 5)).shape
+    (3, 5)
+    >>> [m.regime.value for m in swings[:, 0]]
+    ['II', 'II', 'II']
 
     Released at rest exactly upside down it stays there (the singular solution):
 
