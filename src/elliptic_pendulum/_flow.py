@@ -77,18 +77,34 @@ def _kernel(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool):
         any_rot = bool(np.any(rot))
         sn, cn, dn, am = _landen.evaluate(a, p.landen, a_lo + p.rate_lo * t,
                                           amplitude="split" if any_rot else False, name="t")
-        redo = None
+        any_lib = bool(np.any(lib))
+        lib_yx: Any
+        rot_yx: Any
         # Each formula runs over the whole chunk and np.where keeps it where its regime is:
         # elsewhere (a state at rest, say) it may divide 0 by 0, harmlessly.
         with np.errstate(invalid="ignore", divide="ignore"):
-            if np.any(lib):
-                theta, dtheta, redo = _libration(p, sn, cn, dn, want_theta, want_dtheta)
-            if any_rot:
-                th_r, dth_r, redo_r = _rotation(p, sn, cn, dn, am, want_theta, want_dtheta)
-        if any_rot:
-            theta = th_r if theta is None else np.where(rot, th_r, theta)
+            lib_yx, dtheta = (_libration(p, sn, cn, dn, want_theta, want_dtheta) if any_lib
+                              else (None, None))
+            rot_yx, dth_r = (_rotation(p, sn, cn, dn, want_theta, want_dtheta) if any_rot
+                             else (None, None))
+        if any_rot and want_dtheta:
             dtheta = dth_r if dtheta is None else np.where(rot, dth_r, dtheta)
-            redo = redo_r if redo is None else np.where(rot, redo_r, redo)
+        redo = None
+        if want_theta:
+            # One arctan2 pass for both regimes: theta/2 (II) or the angle delta (IV).
+            y, x = ((np.where(rot, rot_yx[0], lib_yx[0]), np.where(rot, rot_yx[1], lib_yx[1]))
+                    if any_lib and any_rot else (rot_yx if any_rot else lib_yx)[:2])
+            angle = np.arctan2(y, x)
+            if any_lib:
+                theta = p.turns + 2.0 * angle
+                # Where the two terms cancel, theta is near 0 and loses relative digits.
+                redo = np.abs(lib_yx[0]) < lib_yx[2] * (1.0 / 64.0)
+            if any_rot:
+                quarters, rest = am
+                th_r, small = _turned(p, quarters, rest + angle)
+                redo_r = np.abs(small) < (np.abs(rest) + np.abs(angle)) * (1.0 / 64.0)
+                theta = th_r if theta is None else np.where(rot, th_r, theta)
+                redo = redo_r if redo is None else np.where(rot, redo_r, redo)
         if want_theta and np.any(redo & (lib | rot)):
             theta = _direct(p, t, (a, a_lo), redo & (lib | rot), theta)
     sep = (p.code == SEPARATRIX) & ~p.still
@@ -109,48 +125,43 @@ def _kernel(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool):
 def _libration(p: Params, sn, cn, dn, want_theta: bool, want_dtheta: bool):
     """(25) at u0 + tau, with sn u0 = s/alpha, cn u0 = w/alpha, dn u0 = c (DLMF 22.8.1-3).
 
-    theta/2 = atan2(alpha sn u, dn u): arcsin near 1 would halve the digits. The common
+    Returns (y, x, size) with theta/2 = atan2(y, x) = atan2(alpha sn u, dn u) (arcsin near 1
+    would halve the digits), and theta'. The common
     denominator 1 - alpha^2 sn^2 u0 sn^2 tau = c^2 + s^2 cn^2 tau has no cancellation.
     """
     s, c, w = p.s, p.c, p.w
-    theta = dtheta = redo = None
+    yx = dtheta = None
     if want_theta:
         first, second = s * cn * dn, w * c * sn
-        y = first + second                 # alpha sn(u) times the denominator
-        x = c * dn - s * w * sn * cn       # dn(u) times the denominator
-        theta = p.turns + 2.0 * np.arctan2(y, x)
-        # Where the two terms cancel, theta is near 0 and loses relative digits: redone there.
-        redo = np.abs(y) < (np.abs(first) + np.abs(second)) * (1.0 / 64.0)
+        # alpha sn(u) and dn(u) times the denominator; and the size of the terms of the first
+        yx = (first + second, c * dn - s * w * sn * cn, np.abs(first) + np.abs(second))
     if want_dtheta:                        # theta' = 2 w0 alpha cn(u)
         dtheta = 2.0 * p.omega0 * (w * cn - s * c * sn * dn) / (c * c + s * s * cn * cn)
-    return theta, dtheta, redo
+    return yx, dtheta
 
 
-def _rotation(p: Params, sn, cn, dn, am, want_theta: bool, want_dtheta: bool):
+def _rotation(p: Params, sn, cn, dn, want_theta: bool, want_dtheta: bool):
     """(46) at u0 + tau, with sn u0 = sigma s, cn u0 = c, dn u0 = d0 = |w|/k (modulus 1/k).
 
-    am(u) = am(tau) + delta, delta in (-pi, pi) from sin and cos of am(u) - am(tau) by the
-    addition theorem; d0 - 1 = -s^2 / (k (|w| + k)) without cancellation.
+    am(u) = am(tau) + delta, delta = atan2(y, x) in (-pi, pi) from sin and cos of
+    am(u) - am(tau) by the addition theorem; d0 - 1 = -s^2 / (k (|w| + k)) without
+    cancellation. Returns (y, x) and theta'.
     """
     s, c, w, k, sigma = p.s, p.c, p.w, p.k, p.sigma
     aw = np.abs(w)
-    theta = dtheta = redo = None
+    yx = dtheta = None
     if want_theta:
         d0 = aw / k
         d0m1 = -(s / k) * (s / (aw + k))
         spread = cn * cn + d0 * sn * sn
-        y = sigma * s * dn * spread + c * sn * cn * d0m1
-        x = c * spread - sigma * s * sn * cn * dn * d0m1
-        delta = np.arctan2(y, x)
-        quarters, rest = am
-        theta, small = _turned(p, quarters, rest + delta)
-        redo = np.abs(small) < (np.abs(rest) + np.abs(delta)) * (1.0 / 64.0)
+        yx = (sigma * s * dn * spread + c * sn * cn * d0m1,
+              c * spread - sigma * s * sn * cn * dn * d0m1)
     if want_dtheta:                        # theta' = +-2 (w0 / gamma) dn(u)
         # divided through by k^2, which may be huge when omega0 is tiny
         d0, s_k = aw / k, s / k
         dn_u = (d0 * dn - sigma * s_k * (c / k) * sn * cn) / (d0 * d0 + s_k * s_k * cn * cn)
         dtheta = sigma * 2.0 * p.rate * dn_u
-    return theta, dtheta, redo
+    return yx, dtheta
 
 
 def _turned(p: Params, quarters, rest):

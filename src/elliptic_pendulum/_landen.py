@@ -210,7 +210,8 @@ def evaluate(u, c: Constants, u_lo=0.0, amplitude: bool | str = False, name: str
     if not amplitude:
         return sn, cn, dn, None
     # am(v + n K) = n pi/2 + (am v, or arctan(kc sc v) for odd n); ratio = kc sc v.
-    am = np.where(odd, np.arctan(ratio), np.arctan2(s, cn_v))
+    # One arctan2 pass for both cases (arctan r = arctan2(r, 1)).
+    am = np.arctan2(np.where(odd, ratio, s), np.where(odd, 1.0, cn_v))
     if amplitude == "split":  # am = n pi/2 + am, for a caller that adds n pi/2 exactly
         return sn, cn, dn, (n, am)
     return sn, cn, dn, (n * (0.5 * _PI_HI) + am) + n * (0.5 * _PI_LO)

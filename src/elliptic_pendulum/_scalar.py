@@ -78,7 +78,7 @@ def evaluate(u, c, u_lo=0.0, amplitude=False, name="u", quarters=0.0):
     dn = c.kc / dn_v if odd else dn_v
     if not amplitude:
         return sn, cn, dn, None
-    am = _f(np.arctan, ratio) if odd else _f(np.arctan2, s, cn_v)
+    am = _f(np.arctan2, ratio, 1.0) if odd else _f(np.arctan2, s, cn_v)
     if amplitude == "split":
         return sn, cn, dn, (n, am)
     return sn, cn, dn, (n * (0.5 * PI_HI) + am) + n * (0.5 * PI_LO)
