@@ -59,8 +59,8 @@ def jacobi(u: npt.ArrayLike, k: npt.ArrayLike,
     u : array_like
         Any real argument.
     k, kc : array_like
-        Modulus, any real k: the functions are even in k, and |k| > 1 goes
-        through the reciprocal modulus (DLMF 22.17). Or its complement kc in
+        Modulus, any real k: the functions are even in k, and k beyond 1 in
+        size goes through the reciprocal modulus (DLMF 22.17). Or its complement kc in
         [0, 1] by keyword (trusted over k).
 
     Returns

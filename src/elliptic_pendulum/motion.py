@@ -225,9 +225,8 @@ def solve(theta0: ArrayLike, dtheta0: ArrayLike = 0.0, omega0: ArrayLike = 1.0) 
         Initial angular velocity in rad per unit time; either sign.
     omega0 : float or array_like, default 1.0
         sqrt(g / l) of (6), > 0. With omega0 = 1, t is measured in units of
-        sqrt(l / g).
-
-    The three broadcast (numpy rules) to the shape S of the states.
+        sqrt(l / g). The three broadcast (numpy rules) to the shape S of the
+        states.
 
     Returns
     -------
