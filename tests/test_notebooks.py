@@ -105,11 +105,38 @@ def test_both_editions_run_in_the_plain_venv(page: str, plain_venv: Path, tmp_pa
     ex.execute(editions["student"], tmp_path / "student", KERNEL, 600, _kernel_dirs(plain_venv))
     seconds["student"] = time.perf_counter() - start
     print(f"{page}: " + ", ".join(f"{e} {s:.1f} s" for e, s in seconds.items()))
+    if page == SCREENSHOT_PAGE:
+        _screenshot(editions["student"], tmp_path / "student")
     for edition, nb in editions.items():
         text = _markdown(nb)
         assert MYST_LEFTOVERS.findall(text) == [], (edition, MYST_LEFTOVERS.findall(text))
         for name in glue:  # every glued value was pasted, none left as its name
             assert f"`{name}`" not in text, (edition, name)
+
+
+# One student notebook, as it ran in the plain venv, pictured as JupyterLab renders it
+# (tools/notebook_screenshot.py: nbconvert's lab template, local MathJax, headless Chromium),
+# kept in the build for a person to look at.
+SCREENSHOT_PAGE = "energy"
+SCREENSHOTS = BOOK / "_build" / "classroom-screenshot"
+
+
+def _screenshot(nb: nbformat.NotebookNode, cwd: Path) -> None:
+    from print_pdf import find_chromium
+
+    try:
+        find_chromium()
+    except FileNotFoundError:  # no browser: only the browser tests insist (under CI=true)
+        return
+    from notebook_screenshot import screenshot
+
+    number = PAGES.index(SCREENSHOT_PAGE)  # 00-index, 01-intro, ... as make notebooks names them
+    executed = cwd / f"{number:02d}-{SCREENSHOT_PAGE}-student.ipynb"
+    nbformat.write(nb, executed)
+    png = screenshot(executed, SCREENSHOTS / executed.with_suffix(".png").name)
+    # A blank page or a failed shot would be a few kB; the rendered notebook is far more.
+    assert png.stat().st_size > 50_000, png
+    print(f"screenshot of a student notebook: {png}")
 
 
 def _editions(out: Path) -> dict[str, list[Path]]:
