@@ -74,7 +74,7 @@ nitpick_ignore_regex = [
     ),
     (
         r"py:(class|obj|data)",
-        r"(typing|collections\.abc|types|enum|dataclasses|fractions|decimal)\..*",
+        r"(typing|collections\.abc|types|enum|dataclasses|fractions|decimal|pathlib)\..*",
     ),
     # third-party types: numpy, scipy, sympy, matplotlib
     (

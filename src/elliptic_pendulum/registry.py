@@ -12,9 +12,9 @@ argument, or with a named sympy statement of :mod:`elliptic_pendulum.symbolic`.
   positional argument or ``mutant=``);
 - ``verify.fact("Lemma 2.3", ...)``: a *numerical fact*.
 
-:data:`STATUS` (kept in ``_claims.py``) lists, with a one-line justification each, the claims
+``STATUS`` (kept in ``_claims.py``) lists, with a one-line justification each, the claims
 that are definitions or are proved in the text only. ``tests/test_registry.py`` asserts that
-every claim of :data:`CLAIMS` has a check or a status, and that every check found carries a
+every claim of ``CLAIMS`` has a check or a status, and that every check found carries a
 mutant where one is required.
 
 Standard library only, plus :mod:`elliptic_pendulum.symbolic` and :mod:`elliptic_pendulum.errata`
@@ -60,7 +60,7 @@ _PART = re.compile(r"(Proposition 1|Lemma 2)\.([123])")
 
 
 def claims_of(label: str) -> list[str]:
-    """Return the claims of :data:`CLAIMS` that a check's label names.
+    """Return the claims of ``CLAIMS`` that a check's label names.
 
     Only a label that *starts* with an equation number or with "Proposition"/"Lemma" names
     numbered claims: "§4, after (23)" is about a remark after (23), not (23) itself.
@@ -244,7 +244,7 @@ def scan(book: str | Path) -> list[Check]:
 
 
 def coverage(checks: list[Check]) -> dict[str, list[Check]]:
-    """Return {claim: checks of it} for every claim of :data:`CLAIMS` (lists may be empty)."""
+    """Return {claim: checks of it} for every claim of ``CLAIMS`` (lists may be empty)."""
     table: dict[str, list[Check]] = {c: [] for c in CLAIMS}
     for check in checks:
         for claim in claims_of(check.claim):
