@@ -93,7 +93,8 @@ def _link_reference_site(app, config) -> None:
 # * figures as SVG, sharp on any screen (HiDPI) and zoomable; the library leaves rcParams alone;
 # * ipykernel 7 logs, once per page, that its local TCP sockets are unencrypted. The kernel
 #   lives as long as one page and talks only to this process on localhost; the message is
-#   dropped, by its exact text, and every other log line of the kernel still shows.
+#   dropped, by its exact text, and every other log line of the kernel still shows;
+# * the kernel's own shutdown race on a closed socket (ENOTSOCK) is not reported as an error;
 # * no IPython history database for the throw-away kernels.
 _KERNEL_CONFIG = """\
 # Written by book/conf.py at every build; edits are lost.
@@ -106,6 +107,21 @@ class _DropUnencryptedTcpNotice(logging.Filter):
 
 
 logging.getLogger("IPKernelApp").addFilter(_DropUnencryptedTcpNotice())
+
+
+class _DropShutdownRace(logging.Filter):
+    # A finished kernel shutting down can run a ZMQStream callback on a socket it has just
+    # closed (ZMQError ENOTSOCK, logged with a traceback by tornado). ipykernel 7.4 demotes the
+    # iopub case of this race to debug (ipykernel PR 1518); this drops the same error on the
+    # other streams, and nothing else that tornado logs.
+    def filter(self, record):
+        import zmq
+
+        error = record.exc_info[1] if record.exc_info else None
+        return not (isinstance(error, zmq.ZMQError) and error.errno == zmq.ENOTSOCK)
+
+
+logging.getLogger("tornado.general").addFilter(_DropShutdownRace())
 c.InlineBackend.figure_formats = {"svg"}
 c.HistoryManager.enabled = False
 """
