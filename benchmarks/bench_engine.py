@@ -1,8 +1,8 @@
-"""The engine's ratios of issue 8, from one run: ensemble, scalar calls, memory.
+"""The engine's ratios, from one run: ensemble, scalar calls, memory.
 
 * Ensemble: 1e5 mixed initial states (1% of them within 1e-12 of the separatrix), each at
   10 times, ``solve`` plus ``theta``, against one bare ``scipy.special.ellipj`` call on the
-  same 1e6 points (issue: <= 1.5, goal <= 1.0).
+  same 1e6 points (target: <= 1.5, goal <= 1.0).
 * One call on one number, in units of one scalar ``ellipj`` call: ``m.theta(t)`` (<= 10),
   ``solve`` (<= 25), ``ep.sn`` (<= 10).
 * Memory: the peak that ``tracemalloc`` sees during ``theta(t)`` on 1e7 points, over the
@@ -62,7 +62,7 @@ def ensemble(args, rng):
     solve_s = best_time(lambda: ep.solve(theta0[:, None], dtheta0[:, None]), args.repeats)
     print(f"ensemble {args.states:.0e} states x {args.times} times: solve + theta "
           f"{ours_s:.3f} s (solve alone {solve_s:.3f} s), one bare ellipj {bare_s:.3f} s: "
-          f"ratio {ours_s / bare_s:.2f}  (issue: <= 1.5, goal <= 1.0)")
+          f"ratio {ours_s / bare_s:.2f}  (target: <= 1.5, goal <= 1.0)")
 
 
 def scalars(args):
@@ -76,7 +76,7 @@ def scalars(args):
     print(f"one scalar ellipj call: {one * 1e6:.2f} us")
     for name, (seconds, limit) in figures.items():
         print(f"  {name:<24} {seconds * 1e6:7.2f} us = {seconds / one:5.1f} ellipj calls"
-              f"  (issue: <= {limit})")
+              f"  (target: <= {limit})")
 
 
 def memory(args):
@@ -89,7 +89,7 @@ def memory(args):
     tracemalloc.stop()
     print(f"memory: theta(t) on {args.points:.0e} points peaks at {peak / 2**20:.0f} MiB, "
           f"{peak / result.nbytes:.2f} times its {result.nbytes / 2**20:.0f} MiB result "
-          f"(issue: <= 4)")
+          f"(target: <= 4)")
 
 
 def main():

@@ -7,7 +7,7 @@ scipy.special.ellipj call of at most 1.5 (goal 1.0).
 
     python benchmarks/bench_theta.py [--points 1000000] [--repeats 5]
 
-It first prints the engine's ratios of issue 8 (bench_engine.py: an ensemble of 1e5 states,
+It first prints the engine's ratios (bench_engine.py: an ensemble of 1e5 states,
 one call on one number, the memory of theta(t)), so that `make bench` gives them all in one run.
 """
 
@@ -95,7 +95,7 @@ def report(case, points, repeats, rng):
     ivp = best_time(lambda: case.ode(t[-1], dense=True).sol(t), max(1, repeats // 2))
     print(f"{'ours  m.theta(t)':<40}{ours:10.4f} s")
     print(f"{'one bare scipy.special.ellipj(u, m)':<40}{bare:10.4f} s   ratio ours/ellipj "
-          f"{ours / bare:6.2f}  (issue: <= 1.5, goal <= 1.0)")
+          f"{ours / bare:6.2f}  (target: <= 1.5, goal <= 1.0)")
     print(f"{'solve_ivp DOP853 rtol 1e-10, dense':<40}{ivp:10.4f} s   ratio ours/solve_ivp "
           f"{ours / ivp:6.3f}")
 
@@ -141,7 +141,7 @@ def main():
           f"mpmath {mpmath.__version__}")
     engine = argparse.Namespace(states=100_000, times=10, points=10_000_000,
                                 repeats=args.repeats)
-    print("\n== the engine (issue 8) ==")
+    print("\n== the engine ==")
     bench_engine.ensemble(engine, np.random.default_rng(20261201))
     bench_engine.scalars(engine)
     bench_engine.memory(engine)

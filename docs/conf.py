@@ -3,18 +3,19 @@
 from __future__ import annotations
 
 import importlib.util
+from importlib.metadata import version as _version
 from pathlib import Path
 
 project = "elliptic-pendulum"
 author = "elliptic-pendulum contributors"
 copyright = "2024-2026, elliptic-pendulum contributors"
-release = version = "0.1.0"
+release = version = _version("elliptic-pendulum")  # written once, in pyproject.toml
 
 extensions = [
     "myst_parser",
     "sphinx.ext.autodoc",
     "sphinx.ext.autosummary",
-    # The docstrings are numpydoc style (STYLE.md); napoleon reads them without the
+    # The docstrings are numpydoc style (CONTRIBUTING.md); napoleon reads them without the
     # stricter numpydoc extension, whose section checks would duplicate ruff's D rules.
     "sphinx.ext.napoleon",
     "sphinx.ext.doctest",
@@ -42,7 +43,7 @@ napoleon_use_ivar = True
 napoleon_type_aliases = {
     "Regime": "~elliptic_pendulum.regimes.Regime",
     "Motion": "~elliptic_pendulum.motion.Motion",
-    "Pendulum": "~elliptic_pendulum.mechanics.Pendulum",
+    "Pendulum": "~elliptic_pendulum.mechanics.rod.Pendulum",
 }
 
 autodoc_typehints = "description"

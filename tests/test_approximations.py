@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from elliptic_pendulum.approximations import (
+from elliptic_pendulum.periods import (
     agm_ratio,
     kidd_fogg_ratio,
     lima_arun_ratio,

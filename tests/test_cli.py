@@ -143,7 +143,7 @@ def test_python_dash_m():
     assert result.returncode == 2 and len(result.stderr.strip().splitlines()) == 1
 
 
-# --- issue 8, finding 7 -----------------------------------------------------------------------
+# --- hostile input: one line and status 2 --------------------------------------------------------
 
 def test_negative_numbers_in_e_notation(capsys):
     # "--dtheta0 -4e-1" was taken for an option ("expected one argument").

@@ -1,4 +1,4 @@
-"""The edges of issue 8, finding 7: k > 1, negative k, k and kc of different shapes.
+"""The edges of the modulus: k > 1, negative k, k and kc of different shapes.
 
 References: mpmath's ellipfun and ellipk (which take the parameter m = k**2 and accept m > 1),
 at 40 digits; DLMF 22.17 (reciprocal modulus), DLMF 19.2.8 (K even in k).

@@ -1,4 +1,4 @@
-"""Arrays of states (issue 8): broadcasting, accuracy in one array call, exactness at t = 0,
+"""Arrays of states: broadcasting, accuracy in one array call, exactness at t = 0,
 values independent of their batch, no floating-point exceptions, memory.
 
 References: mpmath through the note's closed forms (test_motion.reference, at 40 digits);
@@ -29,7 +29,7 @@ def random_states(n, rng, near_fraction=0.05):
 
 
 def test_ten_thousand_states_in_one_call_match_mpmath():
-    # Issue 8, item 9: 10,000 random states (5% within 1e-12 of the separatrix) in ONE call,
+    # 10,000 random states (5% within 1e-12 of the separatrix) in ONE call,
     # each at its own time. theta to 1e-13 relative wherever |theta| >= 1e-3 of the motion's
     # size (item 5), and to 1e-14 of the size everywhere; theta' to 1e-14 of its maximum.
     rng = np.random.default_rng(20261201)
@@ -109,8 +109,8 @@ def test_value_does_not_depend_on_the_batch():
 
 
 @pytest.mark.parametrize(("theta0", "dtheta0"), [
-    (-1.9387685504279077, 4.350670292531149e-12),  # issue 8: theta'(0) was off by 1.5e-4
-    (1e-12, -0.5),                                  # issue 8: theta(0) was off by 2.7e-5
+    (-1.9387685504279077, 4.350670292531149e-12),  # theta'(0) was once off by 1.5e-4
+    (1e-12, -0.5),                                  # theta(0) was once off by 2.7e-5
     (2.5, 0.0), (3.1, 1e-9), (0.3, 1.9), (-1.0, -2.7), (math.pi - 1e-9, 1e-7)])
 def test_initial_state_comes_back_exactly(theta0, dtheta0):
     # Item 5: theta(0) and theta'(0) to 4 ulp of themselves (not of the motion's size).
@@ -175,7 +175,7 @@ def test_memory_of_theta_stays_near_its_result():
 
 
 def test_repr_and_html_summary():
-    # Issue 10, item 8: a readable repr (one state, or the regimes of an array) and a table
+    # A readable repr (one state, or the regimes of an array) and a table
     # for Jupyter with the regime, c1, the amplitude (or gamma) and the period.
     swing = ep.solve(0.5)
     assert repr(swing).startswith("Motion(regime='II', theta0=0.5")

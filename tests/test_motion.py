@@ -194,7 +194,7 @@ def test_separatrix_at_long_times_without_warnings():
 
 @pytest.mark.parametrize("theta0", [math.pi, -math.pi])
 def test_singular_solution_stays_at_the_top(theta0):
-    # Regime III's singular solution (DESIGN.md): at rest upside down it stays there.
+    # Regime III's singular solution: at rest upside down it stays there.
     # The double math.pi means pi itself (regimes.py); so do the doubles nearest the other
     # odd multiples of pi (test_odd_multiples_of_pi_are_the_top).
     m = ep.solve(theta0, 0.0, 1.3)
@@ -330,9 +330,10 @@ def test_push_below_the_double_range_at_the_top_raises(dtheta0):
 
 @pytest.mark.parametrize("multiple", [3, -3, 5, 7, -101, 2**19 + 1])
 def test_odd_multiples_of_pi_are_the_top(multiple):
-    # DESIGN.md: the double nearest an odd multiple of pi means that multiple, as math.pi
-    # means pi. Reference: that double from mpmath; its neighbours are taken exactly as
-    # they are and swing (II) about the bottom with an amplitude a hair below pi.
+    # The convention of the engine: the double nearest an odd multiple of pi means that
+    # multiple, as math.pi means pi. Reference: that double from mpmath; its neighbours are
+    # taken exactly as they are and swing (II) about the bottom with an amplitude a hair
+    # below pi.
     with mpmath.workdps(60):
         theta0 = float(multiple * mpmath.pi)
     m = ep.solve(theta0, 0.0, 1.3)

@@ -11,7 +11,7 @@ import mpmath
 import numpy as np
 import pytest
 
-from elliptic_pendulum.period import (
+from elliptic_pendulum.periods import (
     agm_period,
     crossing_angle,
     period,

@@ -1,5 +1,5 @@
 """The registry of the book's claims (registry.py, book/checks.md): every claim has a check or a
-stated status, and every check that can carry a mutant carries one (issue 7, "What is checked")."""
+stated status, and every check that can carry a mutant carries one."""
 
 import textwrap
 from pathlib import Path

@@ -14,13 +14,14 @@ import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 
-from elliptic_pendulum.continuation import response_curve
-from elliptic_pendulum.resonance import (
+from elliptic_pendulum.driven import (
     backbone_frequency,
     duffing_backbone,
     periodic_orbit,
+    response_curve,
+    settle,
+    sweep,
 )
-from elliptic_pendulum.sweep import settle, sweep
 
 # A curve that folds under light damping: the peak near 1.86 rad, where the exact backbone and the
 # Duffing one differ by 2e-3, a hundred times the peak's distance from the backbone.

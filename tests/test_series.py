@@ -16,7 +16,7 @@ import pytest
 import sympy as sp
 
 import elliptic_pendulum as ep
-from elliptic_pendulum.series import (
+from elliptic_pendulum.periods import (
     fourier_coefficients,
     nome,
     period_series,

@@ -13,7 +13,7 @@ import pytest
 from scipy.integrate import solve_ivp
 
 import elliptic_pendulum as ep
-from elliptic_pendulum.string_pendulum import (
+from elliptic_pendulum.mechanics import (
     free_flight,
     slack_point,
     string_stays_taut,

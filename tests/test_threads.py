@@ -1,4 +1,4 @@
-"""Safe in threads (issue 8, finding 1): solving never reads or writes mpmath.mp.
+"""Safe in threads: solving never reads or writes mpmath.mp.
 
 Four threads solve near-separatrix states (and a few far ones, which use a private mpmath
 context) while a fifth keeps setting mpmath.mp.dps = 15; every period and theta must be

@@ -1,4 +1,6 @@
-"""Bad input, broadcasting and return types of the public functions (STYLE.md rules 3 and 4).
+"""Bad input, broadcasting and return types of the public functions.
+
+Out-of-domain input is refused naming the parameter and its range; array-likes broadcast.
 
 Out-of-domain input raises ValueError naming the parameter and its range; a non-number raises
 TypeError naming the parameter. Scalars in give Python floats out; arrays broadcast.
@@ -51,7 +53,7 @@ def test_jacobi_non_real_arguments(f, bad):
 @pytest.mark.parametrize("f", JACOBI + [ep.complete_integral])
 @pytest.mark.parametrize("bad", [-1e-300, -0.5, 1.0000000000000002, 2.0, [0.5, 1.5]])
 def test_modulus_out_of_range_names_k_and_its_range(f, bad):
-    # kc must lie in [0, 1]. k itself (issue 8): everything is even in k, so a negative k
+    # kc must lie in [0, 1]. k itself: everything is even in k, so a negative k
     # is |k|; the Jacobi functions take |k| > 1 by the reciprocal modulus (test_edges.py);
     # K1 refuses |k| > 1 (complex there), naming k and its range.
     args = () if f is ep.complete_integral else (0.3,)
@@ -90,7 +92,7 @@ def test_solve_bad_initial_state(name):
     for bad in ["0.1", None, True, 1j]:
         with pytest.raises(TypeError, match=name):
             ep.solve(**{"theta0": 0.1, name: bad})
-    # Arrays of states broadcast (issue 8); a bad element is named like a bad scalar.
+    # Arrays of states broadcast; a bad element is named like a bad scalar.
     for bad in NON_FINITE:
         with pytest.raises(ValueError, match=name):
             ep.solve(**{"theta0": [0.1, 0.2], name: [0.1, bad]})

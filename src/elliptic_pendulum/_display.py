@@ -1,4 +1,4 @@
-"""How a Motion shows itself: a one-line repr and a small table for Jupyter (issue 10)."""
+"""How a Motion shows itself: a one-line repr and a small table for Jupyter."""
 
 from __future__ import annotations
 

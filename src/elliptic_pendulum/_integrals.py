@@ -12,12 +12,12 @@ import numpy as np
 import numpy.typing as npt
 from scipy import special
 
-from . import _jacobi, _landen
-from ._validation import modulus_pair, real_array, scalar_or_array
+from ._engine import jacobi as _jacobi
+from ._engine import landen as _landen
+from ._validation import FloatOrArray, modulus_pair, real_array, scalar_or_array
 
 __all__ = ["complete_integral", "incomplete_integral", "inverse_integral"]
 
-FloatOrArray = float | npt.NDArray[np.float64]
 
 
 def complete_integral(k: npt.ArrayLike, kc: npt.ArrayLike | None = None) -> FloatOrArray:

@@ -12,11 +12,16 @@ import numbers
 from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
-from . import _landen
+from ._engine import landen as _landen
 
-__all__ = ["real_array", "real_scalar", "modulus_pair", "positive_array", "positive_scalar",
-           "scalar_or_array"]
+__all__ = ["FloatOrArray", "real_array", "real_scalar", "modulus_pair", "positive_array",
+           "positive_scalar", "scalar_or_array"]
+
+#: What a public function returns: a Python float for scalar input, else a float array of
+#: the broadcast shape (see :func:`scalar_or_array`).
+FloatOrArray = float | npt.NDArray[np.float64]
 
 
 _BEYOND_DOUBLES = "must be finite (a number within the range of doubles)"

@@ -1,6 +1,6 @@
 """Command line: ``python -m elliptic_pendulum table | period | crossing | solve``.
 
-A thin layer over :mod:`~elliptic_pendulum.period`, :mod:`~elliptic_pendulum.motion` and
+A thin layer over :mod:`~elliptic_pendulum.periods`, :mod:`~elliptic_pendulum.motion` and
 :mod:`~elliptic_pendulum.mechanics`, speaking degrees as the note does. Every bad argument,
 including a value the library refuses, ends as one line on stderr and exit status 2.
 """
@@ -16,9 +16,9 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from .mechanics import Pendulum
+from .mechanics.rod import Pendulum
 from .motion import solve
-from .period import crossing_angle, period, period_ratio
+from .periods.period import crossing_angle, period, period_ratio
 
 __all__ = ["main"]
 

@@ -18,7 +18,7 @@ from collections.abc import Callable
 
 import numpy as np
 
-from ._landen import _two_prod as _two_product  # Dekker's error-free product
+from ._engine.landen import _two_prod as _two_product  # Dekker's error-free product
 
 __all__ = ["periodic_extension", "staircase_extension", "one_sided_derivatives", "derivative_jump"]
 

@@ -23,15 +23,18 @@ from typing import Any, cast, overload
 import numpy as np
 import numpy.typing as npt
 
-from . import _display, _flow, _scalar, _states
-from ._validation import positive_array, real_array, scalar_or_array
-from .regimes import REGIMES, SEPARATRIX, Regime
+from . import _display
+from ._engine import flow as _flow
+from ._engine import scalar as _scalar
+from ._engine import states as _states
+from ._engine.codes import SEPARATRIX
+from ._validation import FloatOrArray, positive_array, real_array, scalar_or_array
+from .regimes import REGIMES, Regime
 
 __all__ = ["Motion", "solve"]
 
 # What a time or an array of times may be; a float or an ndarray comes back.
 ArrayLike = npt.ArrayLike
-FloatOrArray = float | npt.NDArray[np.float64]
 
 
 @dataclass(frozen=True, eq=False, repr=False)

@@ -13,10 +13,9 @@ import numpy as np
 import numpy.typing as npt
 from scipy import integrate as _integrate
 
-from ._validation import positive_scalar, real_array, real_scalar, scalar_or_array
+from ._validation import FloatOrArray, positive_scalar, real_array, real_scalar, scalar_or_array
 
 # A Python float for a scalar time, else an array.
-FloatOrArray = float | npt.NDArray[np.float64]
 
 __all__ = ["integrate"]
 

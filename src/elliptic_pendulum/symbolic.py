@@ -1,215 +1,22 @@
-r"""The note's identities as sympy statements, each one checkable.
+"""The public name of the note's sympy statements, which live in the checks package.
 
-Every statement is an :class:`Identity`: the note's location, a left and a right side to display
-(``sympy.latex``), and :meth:`Identity.check`, True iff ``sympy.simplify`` reduces the residual
-to 0.
-The book shows and checks a statement in one cell, and ``tests/test_symbolic.py`` checks the very
-same objects. :func:`identities` lists the correct statements in the note's order, (1)-(46);
-:func:`elliptic_pendulum.errata.printed_errata` lists the places where the note prints something
-else, with the printed statement as an Identity whose check fails.
+:mod:`elliptic_pendulum.checks.symbolic` holds the symbols and ``Identity``, and
+:mod:`elliptic_pendulum.checks.identities` the list of the note's statements.
 
-Some steps hold only on a domain, where the radicands are positive: -1 < z < 1, 0 < alpha < 1,
--pi < theta < pi. There sympy cannot split sqrt(A B) into sqrt(A) sqrt(B) by itself; such statements
-carry ``positive_radicands=True`` and their residual splits radicals as if every factor were
-positive (``force=True``). That is sound on the stated domain only, so the tests also evaluate the
-residuals numerically at random points of the domain, independently of ``simplify``.
-
-This module imports sympy only, nothing numeric from the package.
+>>> import elliptic_pendulum.symbolic as sym
+>>> sym.identity("eq27").check()
+True
 """
 
-from __future__ import annotations
+from .checks.identities import identities, identity
+from .checks.symbolic import *  # noqa: F403 - a thin re-export of the whole public API
+from .checks.symbolic import __all__ as _symbolic_all
 
-from dataclasses import dataclass, replace
+__all__ = [*_symbolic_all, "identities", "identity"]
 
-import sympy as sp
-
-__all__ = ["Identity", "G", "identities", "identity", "symbols"]
-
-# The note's symbols. Positivity is what the note assumes (l, m, g, omega_0 > 0, 0 < alpha < 1).
-t, u, v, x, z, s, phi = sp.symbols("t u v x z s phi", real=True)
-ell, mass, g, omega0 = sp.symbols(r"\ell m g omega_0", positive=True)
-alpha, gamma, beta = sp.symbols("alpha gamma beta", positive=True)
-c1, c2, c3, c4, theta0, A, T = sp.symbols("c_1 c_2 c_3 c_{4} theta_0 A T", real=True)
-K1 = sp.Symbol("K_1", positive=True)
-theta = sp.Function("theta", real=True)(t)
-Gs = sp.Symbol("G", real=True)  # G as a value, where (22) or (23) is read pointwise
-n_int = sp.Symbol("m", integer=True)
-
-dth, ddth = theta.diff(t), theta.diff(t, 2)
+from .checks import symbolic as _impl
 
 
-class G(sp.Function):
-    r"""The note's G(u, k) (19), known to sympy through its derivative (22).
-
-    .. math:: G_u(u, k) = \sqrt{(1 - G^2)(1 - k^2 G^2)}
-
-    With (22) as ``fdiff`` the chain rule does the rest: (23), (25), (42) and (43) follow by
-    differentiation, as in the note.
-    """
-
-    nargs = 2
-
-    def fdiff(self, argindex=1):  # noqa: D102 - sympy's hook
-        if argindex != 1:
-            raise sp.ArgumentIndexError(self, argindex)
-        k = self.args[1]
-        return sp.sqrt((1 - self**2) * (1 - k**2 * self**2))
-
-    def _eval_is_real(self):
-        return True
-
-
-def symbols() -> dict[str, sp.Basic]:
-    """Return the note's symbols by name, for the book's cells.
-
-    Examples
-    --------
-    >>> sorted(symbols())[:4]
-    ['A', 'G', 'G_value', 'K1']
-    """
-    return {"t": t, "u": u, "z": z, "s": s, "phi": phi, "l": ell, "m": mass, "g": g,
-            "omega0": omega0, "alpha": alpha, "beta": beta, "gamma": gamma, "c1": c1,
-            "theta0": theta0, "theta": theta, "G": G, "G_value": Gs, "K1": K1, "A": A, "T": T}
-
-
-@dataclass(frozen=True)
-class Identity:
-    r"""One statement of the note: lhs = rhs, with where it is and what it needs.
-
-    Parameters
-    ----------
-    name : str
-        Short ASCII key, e.g. ``"eq23"``.
-    equation : str
-        The note's location, e.g. ``"(23)"`` or ``"§4, after (23)"``.
-    lhs, rhs : sympy.Expr
-        The two sides, as displayed (derivatives and integrals may be unevaluated).
-    given : tuple
-        Pairs (old, new) of sympy expressions: substitutions that hold along the motion
-        (e.g. theta'' -> -omega_0^2 sin theta), applied in order after ``doit()``.
-    positive_radicands : bool
-        Split radicals as if their factors were positive (true on the stated ``domain`` only).
-    domain : str
-        Where the statement is claimed.
-    mutant : sympy.Expr or None
-        A wrong right-hand side, the mistake a reader could make (a changed coefficient, sign,
-        exponent or argument); a check worth its name must reject it
-        (``elliptic_pendulum.verify.identity`` asserts that it does).
-    mutant_label : str
-        How the verdict names the mutant (Markdown); by default its LaTeX.
-    change_of_variable : tuple
-        ``(x, f(v), v)``: compare integrals after the substitution x = f(v) (sympy's
-        ``Integral.transform``, limits included), by linearity over each range of v, instead of
-        integrating in closed form; ``given`` is substituted first.
-
-    Examples
-    --------
-    >>> e = Identity("demo", "(none)", sp.sin(x) ** 2 + sp.cos(x) ** 2, sp.Integer(1))
-    >>> e.check(), e.latex()
-    (True, '\\sin^{2}{\\left(x \\right)} + \\cos^{2}{\\left(x \\right)} = 1')
-    """
-
-    name: str
-    equation: str
-    lhs: sp.Expr
-    rhs: sp.Expr
-    given: tuple = ()
-    positive_radicands: bool = False
-    domain: str = ""
-    mutant: sp.Expr | None = None
-    mutant_label: str = ""
-    change_of_variable: tuple = ()
-
-    def mutant_identity(self) -> Identity:
-        """Return the same statement with the mutant as its right-hand side."""
-        if self.mutant is None:
-            raise ValueError(f"{self.name} has no mutant")
-        return replace(self, name=self.name + "_mutant", rhs=self.mutant, mutant=None)
-
-    def residual(self) -> sp.Expr:
-        """Return lhs - rhs with derivatives and integrals done and the ``given`` substituted."""
-        r = self.lhs - self.rhs
-        if self.change_of_variable:
-            return self._substituted(r)
-        # Derivatives first and shallow: d/dz of an integral is its integrand (Leibniz), and a deep
-        # doit() would first try, slowly and in vain, to integrate E1 in closed form.
-        r = r.replace(lambda e: isinstance(e, sp.Derivative), lambda e: e.doit(deep=False)).doit()
-        for old, new in self.given:
-            r = r.subs(old, new).doit()
-        if self.positive_radicands:
-            r = r.replace(sp.Abs, lambda a: a)  # |a| = a on the domain, like the radicands
-            r = sp.powdenest(sp.expand_power_base(r, force=True), force=True)
-            r = sp.powsimp(r, force=True).doit().replace(sp.Abs, lambda a: a)
-        return r
-
-    def _substituted(self, r: sp.Expr) -> sp.Expr:
-        old, new, var = self.change_of_variable
-        for a, b in self.given:
-            r = r.subs(a, b)
-        r = r.replace(lambda e: isinstance(e, sp.Integral) and tuple(e.variables) == (old,),
-                      lambda e: e.transform(old, (new, var)))
-        # One integral per range: the integrands are compared, never integrated (E1 has no
-        # elementary antiderivative, and sympy would spend seconds finding that out).
-        rest: sp.Expr = sp.Integer(0)
-        merged: dict[tuple, sp.Expr] = {}
-        for term in sp.Add.make_args(sp.expand(r, deep=False)):
-            coeff, part = term.as_independent(sp.Integral, as_Add=False)
-            if isinstance(part, sp.Integral) and var not in coeff.free_symbols:
-                merged[part.limits] = merged.get(part.limits, 0) + coeff * part.function
-            else:
-                rest += term
-        for limits, integrand in merged.items():
-            h = integrand
-            if self.positive_radicands:  # factor each radicand's content, then split it
-                h = h.replace(lambda e: e.is_Pow and e.exp.is_Rational and not e.exp.is_Integer,
-                              lambda e: sp.Pow(sp.factor_terms(e.base), e.exp))
-                h = sp.powdenest(sp.expand_power_base(h, force=True), force=True)
-            h = sp.simplify(h)
-            if h != 0:
-                rest += sp.Integral(h, *limits)
-        return rest
-
-    def check(self) -> bool:
-        """Return True iff ``sympy.simplify(self.residual()) == 0``."""
-        return bool(sp.simplify(self.residual()) == 0)
-
-    def latex(self) -> str:
-        """Return the statement as LaTeX, lhs = rhs."""
-        return f"{sp.latex(self.lhs)} = {sp.latex(self.rhs)}"
-
-    def _repr_latex_(self) -> str:
-        return f"$${self.latex()}$$"
-
-
-def identities() -> list[Identity]:
-    r"""Return the note's correct statements, in the note's order, each with its mutant.
-
-    The statements themselves live in ``elliptic_pendulum._identities`` (this module would
-    otherwise outgrow one screenful per idea).
-
-    Examples
-    --------
-    >>> ids = {e.name: e for e in identities()}
-    >>> ids["eq23"].check(), ids["eq3"].check(), ids["tau"].check()
-    (True, True, True)
-    >>> ids["eq26"].mutant_identity().check()  # 8 K_1 / omega_0 is not the period
-    False
-    """
-    from ._identities import note_identities  # noqa: PLC0415 - it imports this module
-
-    return note_identities()
-
-
-def identity(name: str) -> Identity:
-    """Return the correct statement called ``name`` (see :func:`identities` for the names).
-
-    Examples
-    --------
-    >>> e = identity("eq27")
-    >>> e.equation, e.check()
-    ('(27)', True)
-    """
-    found = {e.name: e for e in identities()}
-    if name not in found:
-        raise ValueError(f"name must be one of {sorted(found)}, got {name!r}")
-    return found[name]
+def __getattr__(name: str):
+    """Return the note's symbol ``name`` (``t``, ``theta``, ...) from the module that holds it."""
+    return getattr(_impl, name)

@@ -14,7 +14,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from . import _dd, _landen
+from . import dd as _dd
+from . import landen as _landen
 
 __all__ = ["values"]
 

@@ -1,13 +1,13 @@
 r"""The note's correct statements, (1)-(46), each with a mutant: the list behind ``identities()``.
 
-Each :class:`~elliptic_pendulum.symbolic.Identity` is displayed as it is checked: a left side that
+Each :class:`.Identity` is displayed as it is checked: a left side that
 sympy would evaluate on construction (a derivative, a substitution, a sum) is kept unevaluated
 (``sp.Derivative``, ``sp.Subs``, ``evaluate=False``), so that no display reads "X = X". Each
 ``mutant`` is a wrong right-hand side, the slip a reader could make: a sign, a factor 2, a
 squared modulus, the wrong branch; ``tests/test_symbolic.py`` asserts that sympy rejects it and
 that it is far from the truth at random points of the domain.
 
-Imports sympy and :mod:`elliptic_pendulum.symbolic` only.
+Imports sympy and :mod:`elliptic_pendulum.checks.symbolic` only.
 """
 
 from __future__ import annotations
@@ -45,7 +45,7 @@ from .symbolic import (
     z,
 )
 
-__all__ = ["note_identities"]
+__all__ = ["identities", "identity", "note_identities"]
 
 
 def _E1(upper, k=alpha):
@@ -290,3 +290,32 @@ def note_identities() -> list[Identity]:  # noqa: PLR0915 - one statement per li
         Identity("tau", "§6, tau", sp.Integral(1 / sp.sqrt(1 - z**2), (z, 0, 1)) / K1,
                  sp.pi / (2 * K1), mutant=sp.pi / K1),
     ]
+
+
+def identities() -> list[Identity]:
+    r"""Return the note's correct statements, in the note's order, each with its mutant.
+
+    Examples
+    --------
+    >>> ids = {e.name: e for e in identities()}
+    >>> ids["eq23"].check(), ids["eq3"].check(), ids["tau"].check()
+    (True, True, True)
+    >>> ids["eq26"].mutant_identity().check()  # 8 K_1 / omega_0 is not the period
+    False
+    """
+    return note_identities()
+
+
+def identity(name: str) -> Identity:
+    """Return the correct statement called ``name`` (see :func:`identities` for the names).
+
+    Examples
+    --------
+    >>> e = identity("eq27")
+    >>> e.equation, e.check()
+    ('(27)', True)
+    """
+    found = {e.name: e for e in identities()}
+    if name not in found:
+        raise ValueError(f"name must be one of {sorted(found)}, got {name!r}")
+    return found[name]

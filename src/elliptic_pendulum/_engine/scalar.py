@@ -15,8 +15,9 @@ from functools import lru_cache
 import numpy as np
 from scipy import special
 
-from . import _landen
-from ._dd import (
+from . import landen as _landen
+from .codes import LIBRATION, ROTATION, SEPARATRIX
+from .dd import (
     PI_HI,
     PI_LO,
     PI_LO2,
@@ -33,8 +34,6 @@ from ._dd import (
 )
 
 __all__ = ["jacobi", "landen", "state"]
-
-LIBRATION, SEPARATRIX, ROTATION = 1, 2, 3
 
 
 def _f(ufunc, *args):

@@ -1,8 +1,8 @@
 r"""Figures of the chapter "rod or string?": the flight of the bob, the phase plane of a string.
 
 A string pendulum's bob on its circle, in free flight after the string goes slack, and on the
-circle again after the jerk (:func:`string_flight_plot`); the phase plane shaded by what a
-string does (:func:`string_phase_plane`). Like :mod:`elliptic_pendulum.plotting`, which
+circle again after the jerk (:func:`plot_string_flight`); the phase plane shaded by what a
+string does (:func:`plot_string_phase_plane`). Like :mod:`elliptic_pendulum.plotting`, which
 re-exports them, every helper takes an optional ``ax``, returns it, and changes no rcParams.
 """
 
@@ -13,14 +13,89 @@ from typing import Any
 
 import numpy as np
 
-from ._plotbase import new_axes, readable, text_size
-from .motion import solve
-from .string_pendulum import free_flight, string_stays_taut
+from ..mechanics.rod import Pendulum
+from ..mechanics.string import free_flight, string_stays_taut
+from ..motion import solve
+from ._base import new_axes, readable, text_size
+from .phase import plot_phase_portrait
 
-__all__ = ["string_flight_plot", "string_phase_plane"]
+__all__ = ["plot_tension", "plot_string_flight", "plot_string_phase_plane", "tension_plot",
+           "string_flight_plot", "string_phase_plane"]
+
+_axes = new_axes
 
 
-def string_flight_plot(theta0: float, dtheta0: float, omega0: float = 1.0, ax: Any = None,
+def plot_tension(theta0: float, omega0: float = 1.0, ax: Any = None) -> Any:
+    r"""Plot the rod's tension T/(mg) along one period of a swing released at rest from θ0.
+
+    .. math:: T = m\ell(\theta')^2 + mg\cos\theta \quad (4), \qquad
+              \frac{T}{mg} = 3\cos\theta - 2\cos\theta_0 \text{ (released at rest)}
+
+    Where T < 0 (shaded) the rod pushes the bob outwards: above 90° near the turning points.
+    A string would go slack there. The tension is that of
+    :meth:`~elliptic_pendulum.mechanics.rod.Pendulum.tension`, for ℓ = 1 and g = ω0².
+
+    Parameters
+    ----------
+    theta0 : float
+        Amplitude in radians, 0 < theta0 < π.
+    omega0 : float
+        ω0 = sqrt(g/ℓ); time on the axis is in units of the period.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw; a new figure when None.
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+
+    Raises
+    ------
+    ValueError
+        If theta0 is not in (0, π).
+
+    Examples
+    --------
+    >>> import math, matplotlib
+    >>> matplotlib.use("Agg")
+    >>> ax = plot_tension(math.radians(120))
+    >>> t = ax.lines[0].get_ydata()      # T/(mg) from 3 cos 120° - 2 cos 120° to 3 + 1
+    >>> round(float(t.min()), 6), round(float(t.max()), 6)
+    (-0.5, 4.0)
+    >>> len(ax.collections)              # two shaded intervals where the rod pushes
+    1
+    >>> len(plot_tension(math.radians(60)).collections)   # below 90 degrees it never pushes
+    0
+    >>> import matplotlib.pyplot as plt; plt.close("all")
+    """
+    try:
+        theta0 = float(theta0)
+    except (TypeError, ValueError):
+        raise TypeError(f"theta0 must be a real number (radians), got {theta0!r}") from None
+    if not 0.0 < theta0 < math.pi:
+        raise ValueError(f"theta0 must be in (0, pi) (a swing released at rest), got {theta0!r}")
+    ax = _axes(ax)
+    pendulum = Pendulum(length=1.0, g=float(omega0) ** 2, mass=1.0)
+    swing = pendulum.solve(theta0)
+    t = np.linspace(0.0, swing.period, 1201)
+    ratio = pendulum.tension(swing, t) / (pendulum.mass * pendulum.g)
+    ax.plot(t / swing.period, ratio, color="C0", lw=2, label=r"$T/(mg)$")
+    ax.axhline(0.0, color="0.3", lw=0.8)
+    pushes = ratio < 0
+    if pushes.any():
+        ax.fill_between(t / swing.period, ratio, 0.0, where=pushes, color="C3", alpha=0.3,
+                        label=r"$T < 0$: the rod pushes")
+    ax.set_xlim(0, 1)
+    low, high = float(ratio.min()), float(ratio.max())
+    # Headroom above the curve for the legend.
+    ax.set_ylim(min(low, 0.0) - 0.1 * (high - low), high + 0.4 * (high - low))
+    ax.set_xlabel(r"time $t$ / period (released at $t = 0$ from $\theta_0$)")
+    ax.set_ylabel(r"$T/(mg)$")
+    ax.set_title(rf"$\theta_0 = {math.degrees(theta0):.0f}°$")
+    ax.legend(loc="upper center", ncol=2)
+    return readable(ax)
+
+
+def plot_string_flight(theta0: float, dtheta0: float, omega0: float = 1.0, ax: Any = None,
                        legend: bool = True) -> Any:
     r"""Draw the bob of a string pendulum: on the circle, in free flight, on the circle again.
 
@@ -28,7 +103,7 @@ def string_flight_plot(theta0: float, dtheta0: float, omega0: float = 1.0, ax: A
 
     In units of the length, pivot at the origin (+), y up, :math:`g = \omega_0^2`. Blue: the
     circular motion from the initial state until the string goes slack (black dot); red: the
-    parabola of :func:`~elliptic_pendulum.string_pendulum.free_flight`; green: half a period
+    parabola of :func:`~elliptic_pendulum.mechanics.string.free_flight`; green: half a period
     (or 4 time units if it has none) of the motion on the circle after the jerk, from the
     landing angle with the tangential velocity.
 
@@ -56,7 +131,7 @@ def string_flight_plot(theta0: float, dtheta0: float, omega0: float = 1.0, ax: A
     --------
     >>> import math, matplotlib
     >>> matplotlib.use("Agg")
-    >>> ax = string_flight_plot(0.0, 1.8)
+    >>> ax = plot_string_flight(0.0, 1.8)
     >>> [ln.get_label() for ln in ax.lines[1:5]]
     ['on the circle', 'free flight', 'after the jerk', 'slack']
 
@@ -71,7 +146,7 @@ def string_flight_plot(theta0: float, dtheta0: float, omega0: float = 1.0, ax: A
     (True, True)
     >>> abs(math.hypot(fx[-1], fy[-1]) - 1) < 1e-9
     True
-    >>> string_flight_plot(0.0, 1.0)
+    >>> plot_string_flight(0.0, 1.0)
     Traceback (most recent call last):
     ...
     ValueError: the string stays taut from (theta0, dtheta0) = (0.0, 1.0): there is no flight
@@ -109,16 +184,16 @@ def string_flight_plot(theta0: float, dtheta0: float, omega0: float = 1.0, ax: A
     return readable(ax)
 
 
-def string_phase_plane(omega0: float = 1.0, ax: Any = None) -> Any:
+def plot_string_phase_plane(omega0: float = 1.0, ax: Any = None) -> Any:
     r"""Shade the phase plane by what a string does, with the phase portrait on top.
 
     .. math:: e = \frac{(\theta')^2}{\omega_0^2} - 2\cos\theta, \qquad
               \frac{T}{m\ell\omega_0^2} = \frac{(\theta')^2}{\omega_0^2} + \cos\theta
 
-    Light: taut forever (:func:`~elliptic_pendulum.string_pendulum.string_stays_taut`,
+    Light: taut forever (:func:`~elliptic_pendulum.mechanics.string.string_stays_taut`,
     e ≤ 0 or e ≥ 3); orange: taut now, slack later; red: slack now (T < 0). The borders
     e = 0 (solid) and e = 3 (dashed) in black, and the curves of constant energy of
-    :func:`~elliptic_pendulum.plotting.phase_portrait` (swings of 45, 90, 120 and 150 degrees,
+    :func:`.plot_phase_portrait` (swings of 45, 90, 120 and 150 degrees,
     the separatrix, rotations kicked at 2.1, 2.2 and 2.6 ω0), for θ in [-π, π] and θ' in
     [-3.5 ω0, 3.5 ω0].
 
@@ -137,7 +212,7 @@ def string_phase_plane(omega0: float = 1.0, ax: Any = None) -> Any:
     --------
     >>> import numpy as np, matplotlib
     >>> matplotlib.use("Agg")
-    >>> ax = string_phase_plane()
+    >>> ax = plot_string_phase_plane()
     >>> kind = ax.collections[0].get_array().reshape(601, 601)
 
     At rest at the bottom (the grid's centre) the string is taut forever (class 0); at rest
@@ -153,7 +228,6 @@ def string_phase_plane(omega0: float = 1.0, ax: Any = None) -> Any:
     from matplotlib.lines import Line2D
     from matplotlib.patches import Patch
 
-    from .plotting import phase_portrait
 
     w0 = float(omega0)
     ax = new_axes(ax, figsize=(9, 5.6))
@@ -171,7 +245,7 @@ def string_phase_plane(omega0: float = 1.0, ax: Any = None) -> Any:
         border = w0 * np.sqrt(np.clip(level + 2 * np.cos(xs), 0, None))
         for sign in (1, -1):
             ax.plot(xs[inside], sign * border[inside], style, color="k", lw=1.2)
-    phase_portrait(omega0=w0, ax=ax, window=math.pi, label=False, arrows=False,
+    plot_phase_portrait(omega0=w0, ax=ax, window=math.pi, label=False, arrows=False,
                    xlim=(-math.pi, math.pi), ylim=(-3.5 * w0, 3.5 * w0),
                    amplitudes_deg=(45, 90, 120, 150), kicks=(1.05, 1.1, 1.3))
     handles: list[Any] = [Patch(color=c, label=t) for c, t in zip(colors, (
@@ -184,3 +258,9 @@ def string_phase_plane(omega0: float = 1.0, ax: Any = None) -> Any:
     ax.legend(handles=handles, loc="upper center", bbox_to_anchor=(0.5, -0.12), ncol=5,
               frameon=False, fontsize=text_size(ax, 0.9))
     return readable(ax)
+
+
+# The names of earlier releases.
+tension_plot = plot_tension
+string_flight_plot = plot_string_flight
+string_phase_plane = plot_string_phase_plane

@@ -1,17 +1,7 @@
-r"""Figures for the book, the README and the classroom, drawn from the library.
+r"""Figures of the pendulum itself: its sketch, its phase portrait, its motion in time.
 
-Every helper takes an optional matplotlib ``ax`` (or ``axes``), draws on it and
-returns it; none calls ``plt.show()`` or changes rcParams. Text is sized from the
-figure's width, so it stays readable when the figure is scaled to a page. matplotlib is
-imported inside the functions, so importing :mod:`elliptic_pendulum` does not
-select a backend.
-
-Figures of the note: the pendulum (Fig. 1, :func:`pendulum_sketch`) and the
-phase portrait of (9) (Fig. 2, :func:`phase_portrait`). Figures a teacher asks for beyond
-the note (:func:`period_ratio_plot`, :func:`tension_plot`, :func:`extension_plot`) live in
-``elliptic_pendulum.plotting_extra``, those of the chapters beyond the note in
-``elliptic_pendulum.plotting_beyond``, ``plotting_string`` and ``plotting_resonance``; all
-are importable from here.
+Fig. 1 of the note (:func:`plot_pendulum`), the phase portrait of (9) (Fig. 2,
+:func:`plot_phase_portrait`), and theta(t) beside a numerical integration (:func:`plot_motion`).
 """
 
 from __future__ import annotations
@@ -22,33 +12,17 @@ from typing import Any
 
 import numpy as np
 
-from ._plotbase import new_axes, readable, text_size
-from .motion import Motion, solve
-from .numerics import integrate
-from .plotting_beyond import approximation_error_plot, harmonics_plot
-from .plotting_extra import (
-    extension_plot,
-    period_ratio_plot,
-    plot_amplitude,
-    plot_integral,
-    plot_inverse,
-    plot_jacobi,
-    tension_plot,
-)
-from .plotting_resonance import backbone_plot, response_plot, sweep_plot
-from .plotting_string import string_flight_plot, string_phase_plane
+from ..motion import Motion, solve
+from ..numerics import integrate
+from ._base import new_axes, readable, text_size
 
-__all__ = ["pendulum_sketch", "phase_portrait", "plot_motion", "plot_jacobi",
-           "plot_integral", "plot_inverse", "plot_amplitude",
-           "period_ratio_plot", "tension_plot", "extension_plot",
-           # the chapters beyond the note
-           "approximation_error_plot", "harmonics_plot", "string_flight_plot",
-           "string_phase_plane", "backbone_plot", "response_plot", "sweep_plot"]
+__all__ = ["plot_pendulum", "plot_phase_portrait", "plot_motion", "pendulum_sketch",
+           "phase_portrait"]
 
 _axes = new_axes
 
 
-def pendulum_sketch(theta: float = 0.55, ax: Any = None) -> Any:
+def plot_pendulum(theta: float = 0.55, ax: Any = None) -> Any:
     """Draw Fig. 1: the pendulum with its angle, tension and weight.
 
     The rod of length l hangs from the origin, the bob sits at (l sin θ, -l cos θ) (1),
@@ -58,7 +32,7 @@ def pendulum_sketch(theta: float = 0.55, ax: Any = None) -> Any:
     --------
     >>> import matplotlib
     >>> matplotlib.use("Agg")
-    >>> ax = pendulum_sketch(0.5)
+    >>> ax = plot_pendulum(0.5)
     >>> len(ax.lines) >= 2
     True
     """
@@ -145,7 +119,7 @@ def _arrowheads_in_view(ax: Any, drawn: dict, view: Any) -> None:
                 _arrowhead(ax, th, dth, int(min(i, len(th) - 2)), color)
 
 
-def phase_portrait(omega0: float = 1.0, ax: Any = None,
+def plot_phase_portrait(omega0: float = 1.0, ax: Any = None,
                    amplitudes_deg: Sequence[float] = (30, 60, 90, 120, 150, 175),
                    kicks: Sequence[float] = (1.1, 1.3, 1.6),
                    window: float = 3 * math.pi, label: bool = True, arrows: bool = True,
@@ -186,7 +160,7 @@ def phase_portrait(omega0: float = 1.0, ax: Any = None,
     --------
     >>> import matplotlib
     >>> matplotlib.use("Agg")
-    >>> ax = phase_portrait()
+    >>> ax = plot_phase_portrait()
     >>> ax.get_xlabel()
     '$\\theta$'
 
@@ -198,7 +172,7 @@ def phase_portrait(omega0: float = 1.0, ax: Any = None,
     20
     >>> all((a.xy[0] > a.xyann[0]) == (a.xy[1] > 0) for a in heads)
     True
-    >>> close = phase_portrait(xlim=(1.5, 4.8), ylim=(-1.2, 1.2), label=False)
+    >>> close = plot_phase_portrait(xlim=(1.5, 4.8), ylim=(-1.2, 1.2), label=False)
     >>> [t.get_text() for t in close.get_legend().get_texts()]
     ['II', 'III', 'IV']
     >>> import matplotlib.pyplot as plt; plt.close("all")
@@ -308,3 +282,8 @@ def plot_motion(motions: Motion | Sequence[Motion], t: Any, axes: Any = None,
     for ax in axes:
         readable(ax)
     return axes
+
+
+# The names of earlier releases.
+pendulum_sketch = plot_pendulum
+phase_portrait = plot_phase_portrait

@@ -13,7 +13,7 @@ import math
 
 import mpmath
 
-from . import regimes
+from . import codes as regimes
 
 __all__ = ["classify"]
 
@@ -24,7 +24,7 @@ def _split(x) -> tuple[float, float]:
 
 
 def classify(theta0: float, dtheta0: float, omega0: float) -> tuple:
-    """Return the fields of :class:`regimes.State` for one state, in order."""
+    """Return the fields of :class:`.classify.State` for one state, in order."""
     ctx = mpmath.MPContext()
     ctx.dps = 50 + int(max(0.0, math.log10(abs(theta0) + 1.0)))  # 2 pi m must be exact too
     w0 = ctx.mpf(omega0)

@@ -1,8 +1,8 @@
 r"""Figures of the chapters beyond the note, first of all the period in depth.
 
 The errors of the laboratory's approximations of R(θ0) and the harmonics of a swing. The
-figures of the other chapters beyond the note are in :mod:`elliptic_pendulum.plotting_string`
-(rod or string) and :mod:`elliptic_pendulum.plotting_resonance` (toward nonlinear
+figures of the other chapters beyond the note are in :mod:`elliptic_pendulum.plotting`
+(rod or string) and :mod:`elliptic_pendulum.plotting` (toward nonlinear
 resonance). Like :mod:`elliptic_pendulum.plotting`, which re-exports them, every helper takes
 an optional ``ax`` (or ``axes``), returns it, and changes no rcParams.
 """
@@ -15,13 +15,16 @@ from typing import Any
 
 import numpy as np
 
-from ._plotbase import new_axes, readable
-from .approximations import ratio_approximations
-from .motion import solve
-from .period import agm_period, period
-from .series import fourier_coefficients
+from ..motion import solve
+from ..periods.approximations import ratio_approximations
+from ..periods.period import agm_period, crossing_angle, period, period_ratio
+from ..periods.series import fourier_coefficients
+from ._base import new_axes, readable, text_size
 
-__all__ = ["approximation_error_plot", "harmonics_plot"]
+__all__ = ["plot_period_ratio", "plot_approximation_error", "plot_harmonics", "period_ratio_plot",
+           "approximation_error_plot", "harmonics_plot"]
+
+_axes = new_axes
 
 # label -> (colour, line style), in the order of ratio_approximations
 _STYLES = {"small angle": ("0.4", "-"), "series 2": ("C0", "-"), "series 4": ("C0", "--"),
@@ -30,14 +33,75 @@ _STYLES = {"small angle": ("0.4", "-"), "series 2": ("C0", "-"), "series 4": ("C
            "Lima-Arun": ("C4", "-")}
 
 
-def approximation_error_plot(ax: Any = None, amplitudes: Any = None) -> Any:
+def plot_period_ratio(ax: Any = None, crossings: Sequence[float] = (2.0, 3.0, 4.0)) -> Any:
+    r"""Plot R(θ0), the period over the small-angle period, with crossings and asymptote.
+
+    .. math:: R(\theta_0) = \frac{2}{\pi} K_1\!\left(\sin\frac{\theta_0}{2}\right)
+              \sim \frac{2}{\pi}\ln\frac{4}{\cos(\theta_0/2)} \quad (\theta_0 \to \pi)
+
+    R grows without bound towards 180°, but only logarithmically: it passes 2, 3 and 4
+    (section 4 of the note) at the amplitudes :func:`.crossing_angle`
+    returns, marked on the curve.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes, optional
+        Where to draw; a new figure when None.
+    crossings : list of float
+        The values of R whose amplitudes are marked (each >= 1).
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> ax = plot_period_ratio()
+    >>> x, y = ax.lines[-1].get_data()   # the crossings, in degrees, at R = 2, 3, 4
+    >>> [round(float(v), 1) for v in x], [float(v) for v in y]
+    ([159.8, 175.9, 179.1], [2.0, 3.0, 4.0])
+    >>> import numpy as np                # the marks lie on the curve R(theta0)
+    >>> bool(np.allclose(period_ratio(np.radians(x)), y, rtol=1e-12))
+    True
+    >>> import matplotlib.pyplot as plt; plt.close("all")
+    """
+    ax = _axes(ax)
+    # Dense towards 180 degrees, where R grows: equal steps in log(pi - theta0).
+    gap = np.geomspace(math.pi, 1e-4, 600)
+    theta0 = np.concatenate([np.linspace(0.0, math.pi / 2, 100, endpoint=False),
+                             math.pi - gap[gap < math.pi / 2]])
+    deg = np.degrees(theta0)
+    ax.plot(deg, period_ratio(theta0), color="C0", lw=2, label=r"$R(\theta_0)$")
+    near = theta0 > math.pi / 3  # the asymptote means nothing near theta0 = 0
+    ax.plot(deg[near], 2 / math.pi * np.log(4 / np.cos(theta0[near] / 2)), "--", color="C3",
+            label=r"$(2/\pi)\,\ln(4/\cos(\theta_0/2))$")
+    values = np.asarray(crossings, dtype=float)
+    angles = np.degrees(crossing_angle(values))
+    for v, a in zip(values, angles, strict=True):
+        ax.plot([0, a, a], [v, v, 0], ":", color="0.5", lw=1)
+        # Left of the crossing, above its line, where the curve is still below that value.
+        ax.annotate(rf"$R = {v:g}$ at $\theta_0 = {a:.1f}°$", (a - 3, v), ha="right",
+                    va="bottom", fontsize=text_size(ax, 0.85))
+    ax.plot(angles, values, "o", color="C1", label="crossings")
+    ax.set_xlim(0, 180)
+    ax.set_ylim(0, max(5.0, float(values.max()) + 1))
+    ax.set_xticks(range(0, 181, 30))
+    ax.set_xlabel(r"amplitude $\theta_0$ (degrees)")
+    ax.set_ylabel(r"$R = T / T_0$")
+    ax.legend(loc="upper left")
+    return readable(ax)
+
+
+def plot_approximation_error(ax: Any = None, amplitudes: Any = None) -> Any:
     r"""Plot the relative error of the laboratory's approximations of R, on log scales.
 
     .. math:: \left|\frac{\tilde R(\theta_0)}{R(\theta_0)} - 1\right|, \qquad
               R = \frac{1}{\mathrm{AGM}(1, \cos(\theta_0/2))}
 
-    One curve per entry of :func:`~elliptic_pendulum.approximations.ratio_approximations`,
-    against R from :func:`~elliptic_pendulum.period.agm_period` (the AGM to convergence). The
+    One curve per entry of :func:`~elliptic_pendulum.periods.approximations.ratio_approximations`,
+    against R from :func:`.agm_period` (the AGM to convergence). The
     amplitude axis is a logit scale in θ0/π, which stretches both the small swings and the
     approach to the top; an error of exactly 0 is left out (a log axis cannot show it).
 
@@ -57,7 +121,7 @@ def approximation_error_plot(ax: Any = None, amplitudes: Any = None) -> Any:
     --------
     >>> import math, mpmath, matplotlib
     >>> matplotlib.use("Agg")
-    >>> ax = approximation_error_plot()
+    >>> ax = plot_approximation_error()
     >>> len(ax.lines), ax.lines[0].get_label()
     (10, 'small angle')
 
@@ -67,7 +131,7 @@ def approximation_error_plot(ax: Any = None, amplitudes: Any = None) -> Any:
     >>> with mpmath.workdps(30):
     ...     R = [2 / mpmath.pi * mpmath.ellipk(mpmath.sin(mpmath.mpf(a) / 2) ** 2) for a in x]
     ...     expected = [float(1 - 1 / r) for r in R]
-    >>> drawn = approximation_error_plot(amplitudes=x).lines[0].get_ydata()
+    >>> drawn = plot_approximation_error(amplitudes=x).lines[0].get_ydata()
     >>> bool(max(abs(drawn / expected - 1)) < 1e-12)
     True
     >>> import matplotlib.pyplot as plt; plt.close("all")
@@ -105,7 +169,7 @@ def _fft_coefficients(theta0: float, n: int, samples: int) -> np.ndarray:
     return -2 * F.imag[1:2 * n:2] / samples
 
 
-def harmonics_plot(amplitudes_deg: Sequence[float], n: int = 12, axes: Any = None,
+def plot_harmonics(amplitudes_deg: Sequence[float], n: int = 12, axes: Any = None,
                    samples: int = 1024) -> Any:
     r"""Plot swings flattening into a square wave, and their Fourier coefficients.
 
@@ -114,7 +178,7 @@ def harmonics_plot(amplitudes_deg: Sequence[float], n: int = 12, axes: Any = Non
 
     Left: one period of each swing, θ/θ0 against t/T from the upward passage through the
     bottom. Right: :math:`b_j/b_0` against the harmonic 2j + 1 on a log scale, from the formula
-    (:func:`~elliptic_pendulum.series.fourier_coefficients`, dots) and from an FFT of the
+    (:func:`~elliptic_pendulum.periods.series.fourier_coefficients`, dots) and from an FFT of the
     motion :func:`~elliptic_pendulum.motion.solve` sampled at ``samples`` times (black crosses,
     those above 1e-16), with the square wave's 1/(2j + 1) (dashed).
 
@@ -137,7 +201,7 @@ def harmonics_plot(amplitudes_deg: Sequence[float], n: int = 12, axes: Any = Non
     --------
     >>> import math, mpmath, matplotlib
     >>> matplotlib.use("Agg")
-    >>> left, right = harmonics_plot([30, 179], n=6)
+    >>> left, right = plot_harmonics([30, 179], n=6)
     >>> dots = [ln for ln in right.lines if ln.get_marker() == "o" and len(ln.get_xdata())]
     >>> len(left.lines), len(dots)
     (2, 2)
@@ -184,3 +248,9 @@ def harmonics_plot(amplitudes_deg: Sequence[float], n: int = 12, axes: Any = Non
     for ax in axes:
         readable(ax)
     return axes
+
+
+# The names of earlier releases.
+period_ratio_plot = plot_period_ratio
+approximation_error_plot = plot_approximation_error
+harmonics_plot = plot_harmonics

@@ -12,8 +12,11 @@ import math
 
 import numpy as np
 
-from . import _dd, _flow, _landen
-from .regimes import LIBRATION, REST, ROTATION, SEPARATRIX, classify, phases
+from . import dd as _dd
+from . import flow as _flow
+from . import landen as _landen
+from .classify import classify, phases
+from .codes import LIBRATION, REST, ROTATION, SEPARATRIX
 
 __all__ = ["solve"]
 

@@ -15,12 +15,11 @@ from typing import Any, overload
 import numpy as np
 import numpy.typing as npt
 
-from . import motion as _motion
-from ._validation import positive_scalar, scalar_or_array
-from .period import small_angle_period
+from .. import motion as _motion
+from .._validation import FloatOrArray, positive_scalar, scalar_or_array
+from ..periods.period import small_angle_period
 
 # A Python float for a scalar time, else an array.
-FloatOrArray = float | npt.NDArray[np.float64]
 
 __all__ = ["Pendulum"]
 

@@ -16,9 +16,9 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
-from . import _landen
-from ._landen import _PI_HI, _PI_LO, _two_prod, _two_sum
-from .regimes import LIBRATION, ROTATION, SEPARATRIX
+from . import landen as _landen
+from .codes import LIBRATION, ROTATION, SEPARATRIX
+from .landen import _PI_HI, _PI_LO, _two_prod, _two_sum
 
 __all__ = ["Params", "evaluate", "CHUNK"]
 

@@ -26,12 +26,12 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
-from . import _dd
-from ._dd import PI_HI as _PI_HI
-from ._dd import PI_LO as _PI_LO
-from ._dd import fast_two_sum as _fast_two_sum
-from ._dd import two_prod as _two_prod
-from ._dd import two_sum as _two_sum
+from . import dd as _dd
+from .dd import PI_HI as _PI_HI
+from .dd import PI_LO as _PI_LO
+from .dd import fast_two_sum as _fast_two_sum
+from .dd import two_prod as _two_prod
+from .dd import two_sum as _two_sum
 
 __all__ = ["Constants", "complement", "constants", "core", "evaluate", "quarter_period",
            "reduce", "sech", "gudermannian", "_PI_HI", "_PI_LO", "_two_prod", "_two_sum"]

@@ -26,7 +26,7 @@ from typing import Any
 import numpy as np
 from scipy import integrate
 
-from ._validation import positive_scalar, real_array, real_scalar
+from .._validation import positive_scalar, real_array, real_scalar
 
 __all__ = ["settle", "sweep"]
 

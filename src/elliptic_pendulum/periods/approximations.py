@@ -1,14 +1,14 @@
 r"""The approximations of the period ratio R(theta0) that a laboratory uses, each as a function.
 
 For the chapter "the period in depth": the exact ratio is
-:func:`~elliptic_pendulum.period.period_ratio`, :math:`R = (2/\pi) K_1(\sin(\theta_0/2))
+:func:`~elliptic_pendulum.periods.period.period_ratio`, :math:`R = (2/\pi) K_1(\sin(\theta_0/2))
 = 1/\mathrm{AGM}(1, \cos(\theta_0/2))`; these are what one uses without elliptic integrals.
 Each agrees with R to the order stated, which the tests measure against mpmath:
 
 ========================  ====================================================  =================
 function                  formula                                               error, small A
 ========================  ====================================================  =================
-series (2 or 4 terms)     :func:`~elliptic_pendulum.series.period_series`       next term
+series (2 or 4 terms)     :func:`~elliptic_pendulum.periods.series.period_series`       next term
 ``agm_ratio(A, n)``       :math:`1/a_n`, n steps of the AGM from (1, cos(A/2))  squares each step
 ``log_ratio(A, terms)``   :math:`(2/\pi)\log(4/k_c)` (+ the next term)          exact at the top
 ``kidd_fogg_ratio``       :math:`1/\sqrt{\cos(A/2)}` (Kidd and Fogg, 2002)      :math:`A^4/1024`
@@ -29,7 +29,7 @@ from typing import Any
 
 import numpy as np
 
-from ._validation import real_array, scalar_or_array
+from .._validation import real_array, scalar_or_array
 from .series import period_series
 
 __all__ = ["agm_ratio", "kidd_fogg_ratio", "lima_arun_ratio", "log_ratio",

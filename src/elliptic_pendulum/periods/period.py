@@ -17,14 +17,12 @@ import math
 
 import numpy as np
 import numpy.typing as npt
-from scipy import optimize
 
-from ._landen import _PI_LO
-from ._validation import positive_scalar, real_array, scalar_or_array
-from .elliptic import complete_integral
+from .._engine.landen import _PI_LO
+from .._validation import FloatOrArray, positive_scalar, real_array, scalar_or_array
+from ..elliptic import complete_integral
 
 # What the functions return: a Python float for a scalar argument, else an array.
-FloatOrArray = float | npt.NDArray[np.float64]
 
 __all__ = ["agm_period", "crossing_angle", "period", "period_ratio", "small_angle_period"]
 
@@ -283,6 +281,7 @@ def crossing_angle(value: npt.ArrayLike) -> FloatOrArray:
     >>> bool(r[0] < 2 < r[1] and r[2] < 3 < r[3] and r[4] < 4 < r[5])
     True
     """
+    from scipy import optimize  # only here: importing the package stays light
     values = _checked(value, "value", "a finite period ratio >= 1")
     largest = _ratio_near_top(_SMALLEST_DISTANCE)
     if np.any((values < 1) | (values > largest)):

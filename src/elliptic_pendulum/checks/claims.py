@@ -1,6 +1,6 @@
 """The claims of the note that the registry tracks, and those whose status is not a computation.
 
-Data for :mod:`elliptic_pendulum.registry` (which re-exports it): each entry of :data:`STATUS`
+Data for :mod:`.registry` (which re-exports it): each entry of :data:`STATUS`
 is a definition or a claim proved in the text only, with a one-line justification.
 """
 

@@ -22,9 +22,9 @@ The integration runs in the forcing phase :math:`\tau = \Omega t \in [0, 2\pi]`,
 sensitivity to :math:`\Omega` (which :mod:`.continuation` needs) comes out of the same run.
 
 Design note for the chapter: :func:`backbone_frequency` against :func:`duffing_backbone` is one
-figure; :func:`~elliptic_pendulum.continuation.response_curve` draws the response with its stable
-and unstable branches over it; the long-run check is :func:`~elliptic_pendulum.sweep.settle`
-(an independent solve_ivp from rest), and :func:`~elliptic_pendulum.sweep.sweep` shows the jumps.
+figure; :func:`.response_curve` draws the response with its stable
+and unstable branches over it; the long-run check is :func:`~elliptic_pendulum.driven.sweep.settle`
+(an independent solve_ivp from rest), and :func:`~elliptic_pendulum.driven.sweep` shows the jumps.
 """
 
 from __future__ import annotations
@@ -36,9 +36,9 @@ from typing import Any
 import numpy as np
 from scipy import integrate, optimize
 
-from ._validation import positive_scalar, real_array, real_scalar, scalar_or_array
-from .elliptic import complete_integral
-from .period import period
+from .._validation import positive_scalar, real_array, real_scalar, scalar_or_array
+from ..elliptic import complete_integral
+from ..periods.period import period
 
 __all__ = ["PeriodicOrbit", "backbone_frequency", "duffing_backbone", "periodic_orbit"]
 

@@ -1,8 +1,8 @@
 r"""Figures of the chapter toward nonlinear resonance: backbones and response curves.
 
-The backbone of free motion against amplitude or energy (:func:`backbone_plot`), the
+The backbone of free motion against amplitude or energy (:func:`plot_backbone`), the
 response curve of the driven pendulum with its stable and unstable branches, folds and jumps
-(:func:`response_plot`), and a slow sweep over it (:func:`sweep_plot`). Like
+(:func:`plot_response`), and a slow sweep over it (:func:`plot_sweep`). Like
 :mod:`elliptic_pendulum.plotting`, which re-exports them, every helper takes an optional
 ``ax``, returns it, and changes no rcParams.
 """
@@ -14,14 +14,15 @@ from typing import Any
 
 import numpy as np
 
-from ._plotbase import new_axes, readable
-from .continuation import ResponseCurve
-from .resonance import backbone_frequency, duffing_backbone
+from ..driven.continuation import ResponseCurve
+from ..driven.resonance import backbone_frequency, duffing_backbone
+from ._base import new_axes, readable
 
-__all__ = ["backbone_plot", "response_plot", "sweep_plot"]
+__all__ = ["plot_backbone", "plot_response", "plot_sweep", "backbone_plot", "response_plot",
+           "sweep_plot"]
 
 
-def backbone_plot(omega0: float = 1.0, ax: Any = None, against: str = "amplitude",
+def plot_backbone(omega0: float = 1.0, ax: Any = None, against: str = "amplitude",
                   duffing: bool = True, points: Any = None,
                   points_label: str = "solve_ivp") -> Any:
     r"""Plot the backbone, the frequency of free motion, against amplitude or energy.
@@ -30,9 +31,9 @@ def backbone_plot(omega0: float = 1.0, ax: Any = None, against: str = "amplitude
               \omega_{\text{Duffing}}(A) = \omega_0\Bigl(1 - \frac{A^2}{16}\Bigr)
 
     ``against="amplitude"``: ω/ω0 of the swings
-    (:func:`~elliptic_pendulum.resonance.backbone_frequency`) against the amplitude in
+    (:func:`~elliptic_pendulum.driven.resonance.backbone_frequency`) against the amplitude in
     degrees, 0 to 180, with Duffing's backbone
-    (:func:`~elliptic_pendulum.resonance.duffing_backbone`, dashed) when ``duffing``.
+    (:func:`~elliptic_pendulum.driven.resonance.duffing_backbone`, dashed) when ``duffing``.
     ``against="energy"``: against :math:`h = c_1/(2\omega_0^2)`, the swings (h < 1, h = -cos A)
     and the rotations (1 < h ≤ 4, one full turn per period), with the separatrix h = 1 dotted.
 
@@ -59,7 +60,7 @@ def backbone_plot(omega0: float = 1.0, ax: Any = None, against: str = "amplitude
     --------
     >>> import math, matplotlib
     >>> matplotlib.use("Agg")
-    >>> ax = backbone_plot()
+    >>> ax = plot_backbone()
     >>> [ln.get_label() for ln in ax.lines]
     ['exact', 'Duffing, $1 - A^2/16$']
 
@@ -75,7 +76,7 @@ def backbone_plot(omega0: float = 1.0, ax: Any = None, against: str = "amplitude
     (1.0, 1.0)
     >>> round(float(ax.lines[1].get_ydata()[-1]), 6) == round(1 - math.pi**2 / 16, 6)
     True
-    >>> [ln.get_label() for ln in backbone_plot(against="energy").lines]
+    >>> [ln.get_label() for ln in plot_backbone(against="energy").lines]
     ['swings', 'rotations', '_child2']
     >>> import matplotlib.pyplot as plt; plt.close("all")
     """
@@ -110,7 +111,7 @@ def backbone_plot(omega0: float = 1.0, ax: Any = None, against: str = "amplitude
     return readable(ax)
 
 
-def response_plot(curve: ResponseCurve, ax: Any = None, *, color: str = "C0",
+def plot_response(curve: ResponseCurve, ax: Any = None, *, color: str = "C0",
                   label: str | None = None, omega0: float = 1.0, backbone: bool = True,
                   duffing: bool = False, linear: tuple[float, float] | None = None,
                   points: Any = None, folds: bool = True, jumps: bool = True,
@@ -124,12 +125,12 @@ def response_plot(curve: ResponseCurve, ax: Any = None, *, color: str = "C0",
     the amplitudes drawn; the small-angle response :math:`F/|\omega_0^2 - \Omega^2 +
     2i\zeta\omega_0\Omega|` (dotted grey) for ``linear = (F, zeta)``; measured points (open
     circles, "long integration"); the folds (crosses); the jumps of a slow sweep (orange
-    arrows, :meth:`~elliptic_pendulum.continuation.ResponseCurve.jumps`); the peak (a dot).
+    arrows, :meth:`~elliptic_pendulum.driven.continuation.ResponseCurve.jumps`); the peak (a dot).
 
     Parameters
     ----------
-    curve : elliptic_pendulum.continuation.ResponseCurve
-        From :func:`~elliptic_pendulum.continuation.response_curve`.
+    curve : elliptic_pendulum.driven.ResponseCurve
+        From :func:`~elliptic_pendulum.driven.continuation.response_curve`.
     ax : matplotlib.axes.Axes, optional
         Where to draw; a new figure when None.
     color, label : str
@@ -155,7 +156,7 @@ def response_plot(curve: ResponseCurve, ax: Any = None, *, color: str = "C0",
     >>> matplotlib.use("Agg")
     >>> import elliptic_pendulum as ep
     >>> curve = ep.response_curve(0.15, 0.05, frequencies=(0.6, 1.1), step=0.1)
-    >>> ax = response_plot(curve)
+    >>> ax = plot_response(curve)
 
     One segment per pair of neighbouring orbits, dashed unless both are stable:
 
@@ -216,7 +217,7 @@ def response_plot(curve: ResponseCurve, ax: Any = None, *, color: str = "C0",
     return readable(ax)
 
 
-def sweep_plot(curve: ResponseCurve, up: Any, down: Any, ax: Any = None) -> Any:
+def plot_sweep(curve: ResponseCurve, up: Any, down: Any, ax: Any = None) -> Any:
     r"""Plot a slow sweep of the forcing frequency, up and down, over the response curve.
 
     .. math:: \Omega(t) = \Omega_{\text{start}} \pm r\,t
@@ -226,8 +227,8 @@ def sweep_plot(curve: ResponseCurve, up: Any, down: Any, ax: Any = None) -> Any:
 
     Parameters
     ----------
-    curve : elliptic_pendulum.continuation.ResponseCurve
-        From :func:`~elliptic_pendulum.continuation.response_curve`.
+    curve : elliptic_pendulum.driven.ResponseCurve
+        From :func:`~elliptic_pendulum.driven.continuation.response_curve`.
     up, down : tuple of array_like
         (Ω, A) of each half swing of the sweep up and of the sweep down.
     ax : matplotlib.axes.Axes, optional
@@ -243,7 +244,7 @@ def sweep_plot(curve: ResponseCurve, up: Any, down: Any, ax: Any = None) -> Any:
     >>> matplotlib.use("Agg")
     >>> import elliptic_pendulum as ep
     >>> curve = ep.response_curve(0.15, 0.05, frequencies=(0.6, 1.1), step=0.1)
-    >>> ax = sweep_plot(curve, ([0.7, 0.8], [0.5, 0.6]), ([0.9, 0.8], [1.8, 1.9]))
+    >>> ax = plot_sweep(curve, ([0.7, 0.8], [0.5, 0.6]), ([0.9, 0.8], [1.8, 1.9]))
     >>> [ln.get_label() for ln in ax.lines[-4:]]
     ['stable motions', 'unstable motions', 'sweep up', 'sweep down']
     >>> ax.lines[-1].get_ydata().tolist()
@@ -266,3 +267,9 @@ def sweep_plot(curve: ResponseCurve, up: Any, down: Any, ax: Any = None) -> Any:
            xlabel=r"forcing frequency $\Omega$", ylabel="amplitude $A$ (rad)")
     ax.legend(loc="lower right", markerscale=4)
     return readable(ax)
+
+
+# The names of earlier releases.
+backbone_plot = plot_backbone
+response_plot = plot_response
+sweep_plot = plot_sweep

@@ -22,7 +22,7 @@ alpha) with :math:`k_c = \sqrt{1 - k^2}` passed alongside where k is close to 1.
 
 Design note for the chapter: the coefficients are exact, so a table of them, their ratio test
 (:math:`\sqrt{n a_{n-1}/((n+1) a_n)} \to \pi`) and the error of the 2- and 4-term sums against
-:func:`~elliptic_pendulum.period.period_ratio` can all be glued; the overtones
+:func:`.period_ratio` can all be glued; the overtones
 :math:`b_1/b_0, b_2/b_0` grow from :math:`q` (tiny) toward :math:`1/3, 1/5` (a square wave's) as
 :math:`\theta_0 \to \pi` (0.0015 and 4e-6 at 30 degrees, 0.20 and 0.057 at 179). Independent
 references with natural mutants: OEIS A223067/A223068 (mutant 11/3072 -> 9/1024, the
@@ -39,8 +39,8 @@ from typing import Any
 
 import numpy as np
 
-from ._validation import real_array, scalar_or_array
-from .elliptic import complete_integral
+from .._validation import real_array, scalar_or_array
+from ..elliptic import complete_integral
 
 __all__ = ["fourier_coefficients", "nome", "period_series", "period_series_coefficients"]
 
@@ -152,7 +152,7 @@ def period_series(theta0: Any, terms: int) -> Any:
     Examples
     --------
     Two terms are the classroom correction :math:`1 + \theta_0^2/16`; at 90 degrees six terms
-    are good to 1e-4 and twenty to 1e-8, against :func:`~elliptic_pendulum.period.period_ratio`:
+    are good to 1e-4 and twenty to 1e-8, against :func:`.period_ratio`:
 
     >>> import elliptic_pendulum as ep
     >>> period_series(0.5, 2) == 1 + 0.5**2 / 16

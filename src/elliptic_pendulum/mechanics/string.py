@@ -39,11 +39,10 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from scipy import optimize
 
-from ._validation import positive_scalar, real_array, real_scalar, scalar_or_array
-from .motion import Motion, solve
-from .regimes import Regime
+from .._validation import positive_scalar, real_array, real_scalar, scalar_or_array
+from ..motion import Motion, solve
+from ..regimes import Regime
 
 __all__ = ["FreeFlight", "free_flight", "slack_point", "string_stays_taut"]
 
@@ -96,6 +95,7 @@ def string_stays_taut(theta0: Any, dtheta0: Any = 0.0, omega0: Any = 1.0) -> Any
 
 def _first_root(f, start: float, step: float, limit: int = 4096) -> float:
     """First t > start where f changes sign, from a grid of ``step`` then Brent's method."""
+    from scipy import optimize  # only here: importing the package stays light
     left, f_left = start, f(start)
     for _ in range(limit):
         right = left + step
@@ -111,6 +111,7 @@ def _first_root(f, start: float, step: float, limit: int = 4096) -> float:
 
 def _slack(motion: Motion) -> float | None:
     """Time of the first zero of the tension with T turning negative, or None if it never does."""
+    from scipy import optimize  # only here: importing the package stays light
     w2 = motion.omega0**2
     c1 = motion.energy_constant
 

@@ -18,7 +18,7 @@ follows a stable branch to its fold and jumps to the other: :meth:`ResponseCurve
 
 Design note for the chapter: plot ``curve.frequency`` against ``curve.amplitude``, solid where
 ``curve.stable`` and dashed elsewhere, with
-:func:`~elliptic_pendulum.resonance.backbone_frequency` over it; the folds and the jumps are
+:func:`~elliptic_pendulum.driven.resonance.backbone_frequency` over it; the folds and the jumps are
 numbers to glue. Costs: about 40 ms of solve_ivp per orbit; F = 0.15, zeta = 0.05 over
 [0.4, 1.2] with step 0.12 takes ~4 s (41 orbits; linear interpolation between them is good to
 1e-2, shooting at a given frequency to 1e-10 against a long run); the lightly damped F = 0.015,
@@ -33,7 +33,7 @@ from typing import Any
 
 import numpy as np
 
-from ._validation import positive_scalar, real_array, real_scalar
+from .._validation import positive_scalar, real_array, real_scalar
 from .resonance import PeriodicOrbit, _flow, _orbit, periodic_orbit
 
 __all__ = ["ResponseCurve", "response_curve"]
@@ -46,7 +46,7 @@ class ResponseCurve:
     Attributes
     ----------
     orbits : tuple
-        The :class:`~elliptic_pendulum.resonance.PeriodicOrbit` objects, in the order of the
+        The :class:`~elliptic_pendulum.driven.resonance.PeriodicOrbit` objects, in the order of the
         arclength.
     frequency, amplitude : ndarray
         :math:`\Omega` and the orbits' amplitudes, along the curve.

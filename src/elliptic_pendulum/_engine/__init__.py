@@ -1,0 +1,17 @@
+"""The engine: initial states to the motion theta(t), in double and double-double arithmetic.
+
+Private: nothing here is public API, and nothing here imports from the rest of the package
+(an import-linter contract in pyproject.toml keeps it so). NumPy and scipy.special only, and
+mpmath, in a private context, for the rare states beyond the double-double range.
+
+Modules, from the bottom up (the design note of the reference site gives the invariants):
+
+* :mod:`.dd` -- double-double arithmetic (error-free sums and products, sqrt, sin/cos);
+* :mod:`.landen` -- the AGM / descending Landen constants and the Jacobi kernel on them;
+* :mod:`.jacobi` -- the edges of the Jacobi functions (k = 0, kc = 0, k > 1);
+* :mod:`.codes` -- the integer code of each regime;
+* :mod:`.classify` and :mod:`.farstates` -- initial states to regime, modulus and phase;
+* :mod:`.flow` -- theta(t) and theta'(t) from those parameters;
+* :mod:`.states` -- arrays of states, in chunks, to the parameters a Motion keeps;
+* :mod:`.scalar` -- the same algorithms on Python floats, for one state at a time, to the bit.
+"""

@@ -1,0 +1,189 @@
+r"""Checks with a one-line verdict, for the book's cells: mathematics in view, machinery folded.
+
+A book page shows a derivation, then a cell whose input is folded (tag ``hide-input``) and whose
+output is the outcome of the check in one line, for example::
+
+    (15) holds identically (sympy); it rejects the mutant (ξ')² = ω₀²(1 − ξ²)(1 + α²ξ²).
+    (26) max relative error 2e-16 over 20 swings (tolerance 1e-12); rejects 8 K₁ (error 1).
+
+Every check here *asserts*: a failing check raises ``AssertionError`` and stops the build. And
+every check of a formula also runs a *mutant* of it (a changed coefficient, sign, exponent or
+argument: the mistake a reader could make) and asserts that the check rejects it, so that a check
+which cannot fail is caught where it is written.
+
+Three kinds, named after what backs the claim:
+
+- :func:`identity`: a :class:`.Identity` that sympy reduces to 0, and
+  its mutant (``Identity.mutant``) that sympy does not;
+- :func:`numeric`: a residual function applied to the formula and to its mutant, with a tolerance
+  between the two;
+- :func:`fact`: a numerical fact that is not a formula with a natural mutant (a range, a sign,
+  a count); its condition is asserted and stated.
+
+The book's registry of claims (``book/checks.md``) finds these calls in the pages' sources by
+their first argument, the claim (``"(26)"``, ``"Lemma 2.3"``), so that argument is a literal.
+
+This module changes no global state and imports nothing beyond the standard library.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any, Protocol
+
+__all__ = ["Verdict", "fact", "identity", "numeric"]
+
+
+class _Identity(Protocol):
+    name: str
+    equation: str
+
+    def check(self) -> bool: ...  # pragma: no cover - protocol
+    def latex(self) -> str: ...  # pragma: no cover - protocol
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """The outcome of one passed check: what was claimed, by which kind of check, and how.
+
+    Jupyter and myst-nb show it as one line of Markdown (``_repr_markdown_``), preceded by the
+    displayed equation when there is one; ``str`` gives the same line as plain text.
+    """
+
+    claim: str
+    kind: str
+    text: str
+    display: str = ""
+
+    def __str__(self) -> str:
+        """Return the verdict as one line of plain text."""
+        return f"✔ {self.claim} {self.text}"
+
+    def __repr__(self) -> str:
+        """Return the same line: a verdict at the end of a cell reads as text."""
+        return str(self)
+
+    def _repr_markdown_(self) -> str:
+        line = f"✔ **{self.claim}** {self.text}"
+        return f"$$\n{self.display}\n$$\n\n{line}" if self.display else line
+
+
+def _require(ok: bool, message: str) -> None:
+    # Not an assert statement: ``python -O`` would strip the checks.
+    if not ok:
+        raise AssertionError(message)
+
+
+def _fmt(x: float) -> str:
+    """Two significant digits, as the book prints errors (0 stays 0)."""
+    return "0" if x == 0 else f"{x:.1e}" if abs(x) < 1e-3 or abs(x) >= 1e4 else f"{x:.2g}"
+
+
+def identity(ident: _Identity, *, show: bool = True) -> Verdict:
+    """Assert that a sympy identity holds and that its mutant does not; return the verdict.
+
+    Parameters
+    ----------
+    ident : elliptic_pendulum.symbolic.Identity
+        The statement; ``ident.mutant_identity()`` (when ``ident.mutant`` is set) is the same
+        statement with the mutated right-hand side.
+    show : bool
+        Display the statement itself above the verdict.
+
+    Raises
+    ------
+    AssertionError
+        If sympy does not reduce the statement to 0, or reduces its mutant to 0.
+
+    Examples
+    --------
+    >>> from elliptic_pendulum.symbolic import identity as named
+    >>> print(identity(named("eq13")))
+    ✔ (13) holds identically (sympy)...
+    """
+    _require(ident.check(), f"{ident.equation} ({ident.name}): sympy does not confirm it")
+    text = "holds identically (sympy)"
+    mutant = getattr(ident, "mutant", None)
+    if mutant is not None:
+        wrong = ident.mutant_identity()  # type: ignore[attr-defined]
+        _require(not wrong.check(), f"{ident.name}: the check cannot tell the mutant apart")
+        label = getattr(ident, "mutant_label", "") or f"${wrong.latex()}$"
+        text += f"; it rejects the mutant {label}"
+    return Verdict(ident.equation, "sympy identity", text, ident.latex() if show else "")
+
+
+def numeric(
+    claim: str,
+    residual: Callable[[Any], float],
+    formula: Any,
+    mutant: Any = None,
+    *,
+    tol: float,
+    over: str,
+    mutant_label: str = "",
+    measure: str = "max |residual|",
+) -> Verdict:
+    r"""Assert ``residual(formula) <= tol < residual(mutant)``; return the verdict.
+
+    Parameters
+    ----------
+    claim : str
+        What is checked, a literal: ``"(26)"``, ``"Proposition 1.2"``.
+    residual : callable
+        Measures how far a candidate formula is from an *independent* computation (quadrature,
+        an integrator, mpmath, an FFT); the same function judges the formula and its mutant.
+    formula, mutant
+        The formula as printed, and a mutant of it (None only where no mutant makes sense,
+        which the verdict then says).
+    tol : float
+        The tolerance; it must separate the two.
+    over : str
+        Where it was measured: ``"20 swings, 3001 times each"``.
+    mutant_label : str
+        The mutant as the reader would write it, e.g. ``"$8K_1/\omega_0$"``.
+    measure : str
+        What the residual is, for the verdict line.
+
+    Examples
+    --------
+    The period of small swings, 2 pi / omega0, against the zeros of cos(omega0 t) found by
+    bisection, and the mutant 4 pi / omega0:
+
+    >>> import math
+    >>> from scipy.optimize import brentq
+    >>> w0 = 1.7
+    >>> zeros = [brentq(lambda t: math.cos(w0 * t), a / w0, (a + 1) / w0) for a in (1, 7)]
+    >>> def residual(T):
+    ...     return abs(T(w0) - (zeros[1] - zeros[0]))
+    >>> v = numeric("(8)", residual, lambda w: 2 * math.pi / w, lambda w: 4 * math.pi / w,
+    ...             tol=1e-12, over="two zeros of cos", mutant_label="4 pi / omega0")
+    >>> v.claim, v.kind
+    ('(8)', 'numerical')
+    >>> numeric("(8)", residual, lambda w: 4 * math.pi / w, tol=1e-12, over="two zeros")
+    Traceback (most recent call last):
+    ...
+    AssertionError: (8): max |residual| 3.7 > tolerance 1e-12
+    """
+    err = float(residual(formula))
+    _require(err <= tol, f"{claim}: {measure} {err:.3g} > tolerance {tol:.1g}")
+    text = f"{measure} {_fmt(err)} over {over} (tolerance {_fmt(tol)})"
+    if mutant is not None:
+        bad = float(residual(mutant))
+        _require(not bad <= tol, f"{claim}: the mutant passes too ({measure} {bad:.3g})")
+        text += f"; rejects the mutant {mutant_label or 'formula'} ({measure} {_fmt(bad)})"
+    else:
+        text += "; no mutant"  # said, so that a reader sees the check is the weaker kind
+    return Verdict(claim, "numerical", text)
+
+
+def fact(claim: str, ok: bool, text: str) -> Verdict:
+    """Assert a numerical fact and return it as a verdict.
+
+    Examples
+    --------
+    >>> fact("(14)", -1 <= 0.3 <= 1, "xi stays in [-1, 1]")
+    ✔ (14) xi stays in [-1, 1]
+    """
+    _require(ok, f"{claim}: not so: {text}")
+    return Verdict(claim, "numerical fact", text)
