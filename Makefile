@@ -10,7 +10,9 @@
 #   make bench        speed and accuracy tables
 #   make test         everything: unit, property and doctests, book and docs builds,
 #                     notebook execution, headless-Chromium check (see tests/)
-#   make lint         ruff and mypy
+#   make test-fast    the quick tier for the edit-test loop: unit, property and doctests
+#                     (no builds, no venv creation, no browser), pytest -m "not slow"
+#   make lint         ruff (code, tests, tools, book and docs), mypy, the import contracts
 
 PYTHON ?= python3
 VENV   := .venv
@@ -24,7 +26,7 @@ export PATH := $(CURDIR)/$(VENV)/bin:$(PATH)
 # Opt in to Jupyter's platformdirs layout now, which also silences its migration warning.
 export JUPYTER_PLATFORM_DIRS := 1
 
-.PHONY: venv book book-strict book-student docs notebooks pdf bench test lint clean
+.PHONY: venv book book-strict book-student docs notebooks pdf bench test test-fast lint clean
 
 venv: $(STAMP)
 
@@ -70,9 +72,14 @@ bench: $(STAMP)
 test: $(STAMP)
 	$(PY) -m pytest
 
+test-fast: $(STAMP)
+	$(PY) -m pytest -m "not slow"
+
+# The layers of the package are import-linter contracts in pyproject.toml.
 lint: $(STAMP)
-	$(PY) -m ruff check src tests tools
+	$(PY) -m ruff check src tests tools book docs benchmarks
 	$(PY) -m mypy
+	$(VENV)/bin/lint-imports
 
 clean:
 	rm -rf book/_build docs/_build notebooks .pytest_cache
