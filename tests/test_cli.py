@@ -13,6 +13,7 @@ import pytest
 
 import elliptic_pendulum as ep
 from elliptic_pendulum.cli import main
+from tests import mpref
 
 
 def run(capsys, *argv):
@@ -32,9 +33,6 @@ def fail(capsys, *argv):
     return lines[0]
 
 
-def mp_ratio_degrees(degrees):
-    with mpmath.workdps(30):
-        return 2 / mpmath.pi * mpmath.ellipk(mpmath.sin(mpmath.radians(degrees) / 2) ** 2)
 
 
 def test_table_has_the_notes_values_and_six_decimals(capsys):
@@ -46,14 +44,14 @@ def test_table_has_the_notes_values_and_six_decimals(capsys):
     assert [int(r[0]) for r in rows] == list(note)
     for degrees, ratio, printed_note in rows:
         assert printed_note == note[int(degrees)]
-        assert ratio == mpmath.nstr(mp_ratio_degrees(int(degrees)), 7, strip_zeros=False)
+        assert ratio == mpmath.nstr(mpref.ratio_degrees(int(degrees)), 7, strip_zeros=False)
         assert f"{float(ratio):.3f}" == printed_note
 
 
 def test_period_ratio_and_period(capsys):
     status, out, _ = run(capsys, "period", "120")
     assert status == 0
-    assert out.strip() == f"R(120 deg) = {float(mp_ratio_degrees(120)):.6f}"
+    assert out.strip() == f"R(120 deg) = {float(mpref.ratio_degrees(120)):.6f}"
     _, out, _ = run(capsys, "period", "120", "--omega0", "2")
     expected = 4 * float(mpmath.ellipk(mpmath.sin(mpmath.radians(60)) ** 2)) / 2  # (26)
     assert f"period = {expected:.6g} s" in out
@@ -74,7 +72,7 @@ def test_crossing_angles(capsys):
         assert note - step < angle < note
     for value, angle in zip([2, 3, 4], angles, strict=True):  # mpmath checks the 9 printed decimals
         with mpmath.workdps(30):
-            assert abs(mp_ratio_degrees(mpmath.mpf(angle)) - value) < 1e-7
+            assert abs(mpref.ratio_degrees(mpmath.mpf(angle)) - value) < 1e-7
 
 
 def test_solve_columns_in_degrees_and_radians(capsys):

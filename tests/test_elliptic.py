@@ -24,6 +24,7 @@ from elliptic_pendulum.elliptic import (
     jacobi,
     sn,
 )
+from tests import mpref
 
 DPS = 80
 
@@ -48,11 +49,9 @@ def mp_quarter(kc):
 
 
 def mp_jacobi(us, kc):
+    """sn, cn, dn from mpmath at DPS digits, for the parameter 1 - kc**2 exact from kc."""
     with mpmath.workdps(DPS):
-        m = mp_parameter(kc)
-        out = np.array([[float(mpmath.ellipfun(f, mpmath.mpf(float(u)), m=m))
-                         for f in ("sn", "cn", "dn")] for u in us])
-    return out[:, 0], out[:, 1], out[:, 2]
+        return mpref.jacobi(us, mp_parameter(kc), DPS)
 
 
 def mp_am(u, kc):

@@ -16,42 +16,12 @@ from scipy import special
 
 import elliptic_pendulum as ep
 from elliptic_pendulum import Regime
+from tests import mpref
 
 DPS = 40
+reference = mpref.motion  # the shared mpmath reference, tests/mpref.py
 
 
-def reference(theta0, dtheta0, omega0, ts):
-    """theta(t), theta'(t) and the amplitude (pi for a rotation) from the note's formulas."""
-    with mpmath.workdps(DPS):
-        th, w0 = mpmath.mpf(theta0), mpmath.mpf(omega0)
-        winding = mpmath.nint(th / (2 * mpmath.pi))
-        r = th - 2 * mpmath.pi * winding
-        s, w = mpmath.sin(r / 2), mpmath.mpf(dtheta0) / (2 * w0)
-        k2 = s**2 + w**2
-        k = mpmath.sqrt(k2)
-        thetas, dthetas = [], []
-        if k2 < 1:  # II, (25)
-            c2 = mpmath.ellipf(mpmath.atan2(s, w), k2)
-            for t in ts:
-                u = w0 * mpmath.mpf(float(t)) + c2
-                thetas.append(2 * mpmath.pi * winding
-                              + 2 * mpmath.asin(k * mpmath.ellipfun("sn", u, m=k2)))
-                dthetas.append(2 * w0 * k * mpmath.ellipfun("cn", u, m=k2))
-            amplitude = 2 * mpmath.asin(k)
-        else:  # IV, (46) with gamma = 1/k
-            g2 = 1 / k2
-            d = 1 if dtheta0 > 0 else -1
-            c4 = mpmath.ellipf(d * r / 2, g2)
-            K = mpmath.pi / (2 * mpmath.agm(1, mpmath.sqrt(1 - g2)))
-            for t in ts:
-                u = k * w0 * mpmath.mpf(float(t)) + c4
-                n = mpmath.nint(u / (2 * K))
-                am = n * mpmath.pi + mpmath.asin(mpmath.ellipfun("sn", u - 2 * n * K, m=g2))
-                thetas.append(2 * mpmath.pi * winding + d * 2 * am)
-                dthetas.append(d * 2 * k * w0 * mpmath.ellipfun("dn", u, m=g2))
-            amplitude = mpmath.pi
-        return (np.array([float(x) for x in thetas]), np.array([float(x) for x in dthetas]),
-                float(amplitude))
 
 
 def times(period, periods=100, n=61):
@@ -65,7 +35,7 @@ WORST: dict[str, float] = {}
 def compare(theta0, dtheta0, omega0, periods=100, n=61, record=True):
     m = ep.solve(theta0, dtheta0, omega0)
     ts = times(m.period, periods, n)
-    th_ref, dth_ref, amplitude = reference(theta0, dtheta0, omega0, ts)
+    th_ref, dth_ref, amplitude = reference(theta0, dtheta0, omega0, ts, DPS)
     th, dth = m.theta(ts), m.dtheta(ts)
     err_th = np.max(np.abs(th - th_ref) / np.maximum(np.abs(th_ref), amplitude))
     err_dth = np.max(np.abs(dth - dth_ref)) / np.max(np.abs(dth_ref))

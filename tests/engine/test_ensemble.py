@@ -10,10 +10,10 @@ import tracemalloc
 
 import numpy as np
 import pytest
-from test_motion import reference
 
 import elliptic_pendulum as ep
 from elliptic_pendulum import Regime
+from tests.mpref import motion as reference
 
 
 def random_states(n, rng, near_fraction=0.05):
@@ -28,10 +28,12 @@ def random_states(n, rng, near_fraction=0.05):
     return theta0, dtheta0, omega0
 
 
+@pytest.mark.slow  # 10,000 mpmath references at 40 digits: some 15 s
 def test_ten_thousand_states_in_one_call_match_mpmath():
-    # 10,000 random states (5% within 1e-12 of the separatrix) in ONE call,
-    # each at its own time. theta to 1e-13 relative wherever |theta| >= 1e-3 of the motion's
-    # size (item 5), and to 1e-14 of the size everywhere; theta' to 1e-14 of its maximum.
+    # 10,000 random states (5% within 1e-12 of the separatrix) in ONE call, each at its own
+    # time. theta to 1e-13 relative wherever |theta| >= 1e-3 of the motion's size (the
+    # promise of Motion.theta), and to 1e-14 of the size everywhere; theta' to 1e-14 of its
+    # maximum.
     rng = np.random.default_rng(20261201)
     theta0, dtheta0, omega0 = random_states(10_000, rng)
     t = rng.uniform(-20.0, 20.0, theta0.size)

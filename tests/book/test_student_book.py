@@ -15,12 +15,11 @@ import zipfile
 from pathlib import Path
 
 import pytest
-from conftest import BOOK, ROOT, Build, sphinx_build
-from test_notebooks import SYNTHETIC
 
-sys.path.insert(0, str(ROOT / "tools"))
-import export_notebooks as ex  # noqa: E402
-from classroom_labels import scan  # noqa: E402
+from tests.book.test_notebooks import SYNTHETIC
+from tests.conftest import BOOK, Build, sphinx_build
+from tools.classroom import export as ex
+from tools.classroom.labels import scan
 
 EXERCISE = re.compile(
     r'<div class="exercise[^"]*" id="(?P<label>[^"]+)">\s*<p class="admonition-title">'

@@ -18,14 +18,7 @@ from elliptic_pendulum.periods import (
     period_ratio,
     small_angle_period,
 )
-
-
-def mp_ratio(theta0):
-    """R(theta0) = (2/pi) K(m), m = sin(theta0/2)^2 formed at 50 digits from the exact double."""
-    with mpmath.workdps(50):
-        m = mpmath.sin(mpmath.mpf(float(theta0)) / 2) ** 2
-        return float(2 / mpmath.pi * mpmath.ellipk(m))
-
+from tests import mpref
 
 # Amplitudes spread over the whole range: tiny, moderate, and approaching 180 degrees, where the
 # distance to pi runs down to 1e-10 rad and 1e-9 degree.
@@ -39,7 +32,7 @@ GRID = np.unique(np.concatenate([
 
 def test_period_ratio_matches_mpmath_to_a_few_ulp():
     ours = period_ratio(GRID)
-    reference = np.array([mp_ratio(t) for t in GRID])
+    reference = np.array([float(mpref.ratio(t, 50)) for t in GRID])
     relative = np.abs(ours - reference) / reference
     assert relative.max() <= 1e-15, (GRID[relative.argmax()], relative.max())
 
@@ -47,7 +40,7 @@ def test_period_ratio_matches_mpmath_to_a_few_ulp():
 def test_period_ratio_one_degree_from_nine_nines():
     # 180 - 1e-9 degrees is the accuracy promise of the module; mpmath gives the value.
     theta0 = math.radians(180 - 1e-9)
-    assert period_ratio(theta0) == pytest.approx(mp_ratio(theta0), rel=1e-15, abs=0)
+    assert period_ratio(theta0) == pytest.approx(float(mpref.ratio(theta0, 50)), rel=1e-15, abs=0)
 
 
 def test_note_table_three_decimals():
@@ -115,7 +108,8 @@ def test_crossing_angle_is_bracketed_by_its_neighbours(value):
     theta = crossing_angle(value)
     step = 4 * (math.nextafter(theta, 4) - theta)
     top = math.nextafter(math.pi, 0)  # beyond it the double would be past 180 degrees
-    assert mp_ratio(theta - step) < value < mp_ratio(min(theta + step, top))
+    below, above = mpref.ratio(theta - step, 50), mpref.ratio(min(theta + step, top), 50)
+    assert float(below) < value < float(above)
 
 
 def test_crossing_angles_in_the_note():

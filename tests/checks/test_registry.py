@@ -2,14 +2,14 @@
 stated status, and every check that can carry a mutant carries one."""
 
 import textwrap
-from pathlib import Path
 
 import pytest
 
 from elliptic_pendulum import registry
 from elliptic_pendulum.symbolic import identities
+from tests.conftest import ROOT
 
-BOOK = Path(__file__).resolve().parents[1] / "book"
+BOOK = ROOT / "book"
 CHECKS = registry.scan(BOOK)
 
 

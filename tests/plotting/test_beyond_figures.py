@@ -22,6 +22,7 @@ from scipy.integrate import solve_ivp  # noqa: E402
 
 import elliptic_pendulum as ep  # noqa: E402
 import elliptic_pendulum.plotting as epp  # noqa: E402
+from tests import mpref  # noqa: E402
 
 
 @pytest.fixture(autouse=True)
@@ -39,11 +40,6 @@ def _pendulum(t, y):
     return [y[1], -math.sin(y[0])]
 
 
-def _R_mp(theta0):
-    """R(theta0) = (2/pi) K(sin^2(theta0/2)) by mpmath at 40 digits (parameter m = k^2)."""
-    with mpmath.workdps(40):
-        half = mpmath.mpf(float(theta0)) / 2
-        return 2 / mpmath.pi * mpmath.ellipk(mpmath.sin(half) ** 2)
 
 
 def test_approximation_errors_are_those_against_mpmath():
@@ -53,7 +49,7 @@ def test_approximation_errors_are_those_against_mpmath():
     assert [ln.get_label() for ln in ax.lines] == list(approximations)
     for line, values in zip(ax.lines, approximations.values(), strict=True):
         with mpmath.workdps(40):
-            exact = np.array([float(abs(mpmath.mpf(float(v)) / _R_mp(a) - 1))
+            exact = np.array([float(abs(mpmath.mpf(float(v)) / mpref.ratio(a, 40) - 1))
                               for v, a in zip(values, x, strict=True)])
         drawn = np.nan_to_num(line.get_ydata(), nan=0.0)
         # the error of the figure's R (the AGM to convergence), relative
@@ -77,7 +73,7 @@ def test_harmonics_swing_is_the_integrated_one_and_dots_match_mpmath_nome():
         a = math.radians(d)
         s, y = left.lines[i].get_data()
         # the integrator from the upward passage through the bottom, speed 2 sin(a/2) (9)
-        T = float(4 * _R_mp(a) * mpmath.pi / 2)
+        T = float(4 * mpref.ratio(a, 40) * mpmath.pi / 2)
         every = slice(0, None, 100)
         run = solve_ivp(_pendulum, (0, T), [0.0, 2 * math.sin(a / 2)], method="DOP853",
                         rtol=1e-12, atol=1e-12, t_eval=s[every] * T)
@@ -239,43 +235,3 @@ def test_sweep_plot_draws_the_sweeps_over_the_curve(curve):
     assert np.array_equal(lines["sweep down"].get_xydata(), np.column_stack(down))
     assert ax.get_xlim() == (0.7, 0.95) and ax.get_ylim()[1] == pytest.approx(1.1 * 1.85)
 
-
-def test_helpers_return_the_given_axes_and_leave_rcparams(curve):
-    before = {k: repr(v) for k, v in matplotlib.rcParams.items()}
-    fig, axes = plt.subplots(1, 2)
-    assert epp.approximation_error_plot(ax=axes[0]) is axes[0]
-    assert epp.string_phase_plane(ax=axes[1]) is axes[1]
-    fig, axes = plt.subplots(1, 2)
-    assert epp.harmonics_plot([60], n=4, axes=axes) is axes
-    fig, ax = plt.subplots()
-    assert epp.backbone_plot(ax=ax) is ax
-    assert epp.response_plot(curve, ax=ax) is ax
-    assert epp.sweep_plot(curve, ([0.7], [0.3]), ([0.9], [1.0])) is not None
-    assert {k: repr(v) for k, v in matplotlib.rcParams.items()} == before
-
-
-# The rule of tests/test_plotting.py: a figure of w inches is an SVG of 96 w px, scaled down to
-# the book's 672-px column when wider; its text must read at 11 px or more there.
-def _displayed_px(text, fig):
-    return text.get_fontsize() * 96 / 72 * min(1.0, 672 / (96 * fig.get_figwidth()))
-
-
-def _texts(ax):
-    texts = [ax.xaxis.label, ax.yaxis.label, ax.title, *ax.get_xticklabels(),
-             *ax.get_yticklabels(), *ax.texts]
-    legend = ax.get_legend()
-    if legend is not None:
-        texts += [*legend.get_texts(), legend.get_title()]
-    return [t for t in texts if t.get_text()]
-
-
-def test_every_text_is_readable_at_display_size_as_the_book_draws_it(curve):
-    figures = [epp.approximation_error_plot(), epp.string_phase_plane(),
-               *epp.harmonics_plot([30, 179]), epp.response_plot(curve),
-               epp.sweep_plot(curve, ([0.7], [0.3]), ([0.9], [1.0]))]
-    for size in ((8, 4.2), (9, 3.8)):            # two panels side by side, as in the book
-        fig, axes = plt.subplots(1, 2, figsize=size)
-        figures += [epp.string_flight_plot(0.0, 1.8, ax=axes[0]), epp.backbone_plot(ax=axes[1])]
-    small = [f"{t.get_text()!r}: {_displayed_px(t, ax.figure):.1f} px"
-             for ax in figures for t in _texts(ax) if _displayed_px(t, ax.figure) < 11.0]
-    assert small == []

@@ -7,7 +7,6 @@ DLMF 19.12.1 for the logarithmic law; the AGM's quadratic convergence (DLMF 19.8
 
 import math
 
-import mpmath
 import numpy as np
 import pytest
 import sympy as sp
@@ -19,18 +18,13 @@ from elliptic_pendulum.periods import (
     log_ratio,
     ratio_approximations,
 )
-
-
-def mp_ratio(theta0):
-    with mpmath.workdps(50):
-        m = mpmath.sin(mpmath.mpf(float(theta0)) / 2) ** 2
-        return 2 / mpmath.pi * mpmath.ellipk(m)
+from tests import mpref
 
 
 def test_agm_steps_converge_quadratically():
     for degrees in (30, 90, 150, 175):
         a = math.radians(degrees)
-        exact = mp_ratio(a)
+        exact = mpref.ratio(a, 50)
         errors = [float(exact - agm_ratio(a, n)) for n in range(6)]
         useful = [e for e in errors if e > 1e-13]
         assert all(e > -1e-15 for e in errors)  # 1/a_n increases toward R (to rounding)
@@ -49,7 +43,7 @@ def test_log_law_errors_shrink_like_powers_of_kc():
     # DLMF 19.12.1: one term errs by O(kc^2 log kc), two terms by O(kc^4 log kc)
     for kc in (1e-1, 1e-2, 1e-3):
         a = 2 * math.acos(kc)
-        exact = mp_ratio(a)
+        exact = mpref.ratio(a, 50)
         kc_true = math.cos(a / 2)
         one, two = float(exact - log_ratio(a, 1)), float(exact - log_ratio(a, 2))
         scale = kc_true**2 * math.log(4 / kc_true)
@@ -71,20 +65,20 @@ def test_small_amplitude_error_is_the_fourth_order_gap(function, formula):
     assert sp.expand(gap).coeff(x, 2) == 0
     c4 = float(sp.expand(gap).coeff(x, 4))
     for a in (0.02, 0.05):
-        measured = float(function(a) - mp_ratio(a)) / a**4
+        measured = float(function(a) - mpref.ratio(a, 50)) / a**4
         assert abs(measured / c4 - 1) < 0.01
 
 
 def test_lima_arun_and_kidd_fogg_at_large_amplitude():
     # Lima and Arun quote below 0.25%: true at 90 degrees, not at 120
-    rel = [float(lima_arun_ratio(math.radians(d)) / mp_ratio(math.radians(d)) - 1)
+    rel = [float(lima_arun_ratio(math.radians(d)) / mpref.ratio(math.radians(d), 50) - 1)
            for d in (30, 60, 90, 120)]
     assert all(0 < r < 0.0025 for r in rel[:3]) and rel[3] > 0.0025
     # near the top Lima-Arun overshoots by a factor tending (slowly, like 1/log kc) to pi/2,
     # Kidd-Fogg without bound
     a = math.pi - 1e-12
-    assert abs(float(lima_arun_ratio(a) / mp_ratio(a)) - math.pi / 2) < 0.1
-    assert kidd_fogg_ratio(a) > 100 * float(mp_ratio(a))
+    assert abs(float(lima_arun_ratio(a) / mpref.ratio(a, 50)) - math.pi / 2) < 0.1
+    assert kidd_fogg_ratio(a) > 100 * float(mpref.ratio(a, 50))
 
 
 def test_lima_arun_keeps_its_digits_at_small_amplitude():
@@ -100,7 +94,7 @@ def test_ratio_approximations_table():
     assert set(table) == {"small angle", "series 2", "series 4", "AGM 1", "AGM 2", "AGM 3",
                           "log", "log 2", "Kidd-Fogg", "Lima-Arun"}
     assert all(np.shape(v) == (3,) for v in table.values())
-    assert np.all(table["AGM 3"] <= [float(mp_ratio(t)) for t in a])
+    assert np.all(table["AGM 3"] <= [float(mpref.ratio(t, 50)) for t in a])
 
 
 @pytest.mark.parametrize("function", [kidd_fogg_ratio, lima_arun_ratio, ratio_approximations,

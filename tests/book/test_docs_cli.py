@@ -19,7 +19,9 @@ from pathlib import Path
 
 import pytest
 
-CLI_PAGE = Path(__file__).resolve().parents[1] / "docs" / "cli.md"
+from tests.conftest import ROOT
+
+CLI_PAGE = ROOT / "docs" / "cli.md"
 PROGRAMS = ("python -m elliptic_pendulum", "elliptic-pendulum")
 
 

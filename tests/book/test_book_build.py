@@ -5,14 +5,15 @@ from __future__ import annotations
 import re
 
 import pytest
-from _buildcheck import (
+
+from tests.book._buildcheck import (
     external_resources,
     links,
     links_with_spaces,
     pages_with_math,
     toctree_entries,
 )
-from conftest import BOOK, Build
+from tests.conftest import BOOK, Build
 
 pytestmark = pytest.mark.slow
 

@@ -1,5 +1,5 @@
-"""The figures: what they draw matches the mathematics, the legends match what is drawn, the
-text is readable once the figure is scaled to the page, and nothing global changes.
+"""The figures: what they draw matches the mathematics, the legends match what is drawn (the
+contract every figure keeps, readable text and no global change, is in plotting/test_contract.py).
 
 References are independent of the plotted code: mpmath for K1, the integrator for theta(t),
 the definitions (20) and (21) written out by hand for Lemma 2's extensions.
@@ -21,13 +21,6 @@ import pytest  # noqa: E402
 import elliptic_pendulum as ep  # noqa: E402
 import elliptic_pendulum.plotting as epp  # noqa: E402
 
-# The book's text column is 672 CSS pixels wide at a 1280-pixel window (measured in
-# Chromium); a figure of w inches is an SVG of 96 w pixels, scaled down to the column when
-# wider. Text must stay at least 11 px there (the old 7-point legends of a 9-inch figure
-# came out at 7 px).
-COLUMN_PX = 672
-MIN_TEXT_PX = 11.0
-
 
 @pytest.fixture(autouse=True)
 def _close_figures():
@@ -38,38 +31,6 @@ def _close_figures():
 def heads(ax):
     """The arrowheads of a phase portrait (annotations with an arrow and no text)."""
     return [a for a in ax.texts if a.arrow_patch is not None]
-
-
-def displayed_px(text, fig) -> float:
-    scale = min(1.0, COLUMN_PX / (96 * fig.get_figwidth()))
-    return text.get_fontsize() * 96 / 72 * scale
-
-
-def all_texts(ax):
-    texts = [ax.xaxis.label, ax.yaxis.label, *ax.get_xticklabels(), *ax.get_yticklabels()]
-    texts += [t for t in ax.texts if t.get_text()]
-    legend = ax.get_legend()
-    if legend is not None:
-        texts += [*legend.get_texts(), legend.get_title()]
-    return [t for t in texts if t.get_text()]
-
-
-def every_figure():
-    """Each helper, called as the book calls it, on a new figure of the book's sizes."""
-    t = np.linspace(0, 10, 200)
-    k = 0.9
-    K = ep.complete_integral(k)
-    yield "phase_portrait", epp.phase_portrait(ax=plt.subplots(figsize=(9, 5))[1])
-    yield "pendulum_sketch", epp.pendulum_sketch(0.5, ax=plt.subplots(figsize=(4, 4))[1])
-    fig, axes = plt.subplots(2, 1, figsize=(7, 5))
-    yield "plot_motion", epp.plot_motion(ep.solve(1.0), t, axes=axes, compare=False)[0]
-    yield "plot_jacobi", epp.plot_jacobi(k, np.linspace(-2 * K, 2 * K, 200))
-    yield "plot_integral", epp.plot_integral()
-    yield "plot_inverse", epp.plot_inverse()
-    yield "plot_amplitude", epp.plot_amplitude(k, np.linspace(-2 * K, 2 * K, 200))
-    yield "period_ratio_plot", epp.period_ratio_plot()
-    yield "tension_plot", epp.tension_plot(2.5)
-    yield "extension_plot", epp.extension_plot(np.sin, 1.0)
 
 
 # --- the phase portrait's arrows and legend ---------------------------------------------
@@ -117,46 +78,6 @@ def test_phase_portrait_close_up_lists_only_the_regimes_in_view() -> None:
 
 
 # --- every helper: readable, returns its axes, changes nothing global -------------------
-
-
-def test_every_text_is_readable_at_display_size() -> None:
-    small = []
-    for name, ax in every_figure():
-        for text in all_texts(ax):
-            px = displayed_px(text, ax.figure)
-            if px < MIN_TEXT_PX:
-                small.append(f"{name}: {text.get_text()!r} {px:.1f} px")
-    assert small == []
-
-
-def test_helpers_draw_on_the_given_axes_and_return_them() -> None:
-    fig, ax = plt.subplots()
-    t = np.linspace(0, 5, 50)
-    calls = [
-        lambda ax: epp.phase_portrait(ax=ax),
-        lambda ax: epp.pendulum_sketch(ax=ax),
-        lambda ax: epp.plot_jacobi(0.5, t, ax=ax),
-        lambda ax: epp.plot_integral(ax=ax),
-        lambda ax: epp.plot_inverse(ax=ax),
-        lambda ax: epp.plot_amplitude(0.5, t, ax=ax),
-        lambda ax: epp.period_ratio_plot(ax=ax),
-        lambda ax: epp.tension_plot(1.0, ax=ax),
-        lambda ax: epp.extension_plot(np.sin, 1.0, ax=ax),
-    ]
-    for call in calls:
-        fig, ax = plt.subplots()
-        assert call(ax) is ax
-        assert ax.lines, call
-    fig, axes = plt.subplots(2, 1)
-    assert epp.plot_motion(ep.solve(1.0), t, axes=axes, compare=False) is axes
-
-
-def test_no_helper_changes_rcparams() -> None:
-    before = dict(matplotlib.rcParams)
-    for _ in every_figure():
-        pass
-    after = dict(matplotlib.rcParams)
-    assert {k for k in before if before[k] != after[k]} == set()
 
 
 def test_plotting_keeps_its_names() -> None:

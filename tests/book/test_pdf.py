@@ -1,4 +1,4 @@
-"""The book as PDF (tools/build_pdf.py, `make pdf`): a single-page build of each edition
+"""The book as PDF (tools/pdf, `make pdf`): a single-page build of each edition
 printed by headless Chromium after MathJax. The PDFs are read back with pypdf: every chapter
 title and every equation number of the note is there as text, the figures and formulas were
 drawn, the instructor's copy has every solution open and the student's none.
@@ -10,14 +10,12 @@ import importlib.util
 import os
 import re
 import shutil
-import sys
 
 import pytest
-from conftest import BOOK, ROOT, Build
 
-sys.path.insert(0, str(ROOT / "tools"))
-import build_pdf  # noqa: E402
-from classroom_labels import scan  # noqa: E402
+from tests.conftest import BOOK, Build
+from tools.classroom.labels import scan
+from tools.pdf import build as build_pdf
 
 pytestmark = pytest.mark.slow
 REQUIRED = os.environ.get("CI") == "true"

@@ -3,13 +3,14 @@
 from __future__ import annotations
 
 import pytest
-from _buildcheck import (
+
+from tests.book._buildcheck import (
     external_resources,
     links_with_spaces,
     pages_with_math,
     toctree_entries,
 )
-from conftest import DOCS, Build
+from tests.conftest import DOCS, Build
 
 pytestmark = pytest.mark.slow
 

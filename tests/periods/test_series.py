@@ -22,6 +22,7 @@ from elliptic_pendulum.periods import (
     period_series,
     period_series_coefficients,
 )
+from tests import mpref
 
 # OEIS A223067 and A223068 (Johannes W. Meijer, 2013), as published.
 OEIS_NUMERATORS = [
@@ -80,10 +81,6 @@ def test_radius_of_convergence_is_pi():
     assert abs(n * float(a[n] * Fraction(math.pi) ** (2 * n)) - 2 / math.pi) < 2e-5
 
 
-def mp_ratio(theta0):
-    with mpmath.workdps(40):
-        m = mpmath.sin(mpmath.mpf(float(theta0)) / 2) ** 2
-        return float(2 / mpmath.pi * mpmath.ellipk(m))
 
 
 @pytest.mark.parametrize("degrees, terms", [(10, 4), (45, 6), (90, 12), (150, 30), (170, 40)])
@@ -91,9 +88,9 @@ def test_partial_sums_miss_r_by_their_tail(degrees, terms):
     # Positive coefficients whose ratio a_(n+1)/a_n rises toward 1/pi^2: the tail lies between
     # its first term and that term / (1 - theta0^2/pi^2).
     theta0 = math.radians(degrees)
-    error = mp_ratio(theta0) - period_series(theta0, terms)
+    error = float(mpref.ratio(theta0, 40)) - period_series(theta0, terms)
     first = float(period_series_coefficients(terms + 1)[-1]) * theta0 ** (2 * terms)
-    rounding = 4e-16 * mp_ratio(theta0)
+    rounding = 4e-16 * float(mpref.ratio(theta0, 40))
     assert first - rounding <= error <= first / (1 - (theta0 / math.pi) ** 2) + rounding
 
 

@@ -1,4 +1,4 @@
-"""The classroom notebooks (tools/export_notebooks.py): two editions in the book's reading
+"""The classroom notebooks (tools/classroom): two editions in the book's reading
 order, plain Jupyter Markdown, and code that runs where students are: a fresh kernel of a
 plain venv holding only ``pip install .`` (not editable) and ipykernel. That venv is cached
 in .cache/plain-venv/<hash of pyproject.toml>; the package is reinstalled when src/ changes.
@@ -17,11 +17,10 @@ from pathlib import Path
 
 import nbformat
 import pytest
-from conftest import BOOK, ROOT
 
-sys.path.insert(0, str(ROOT / "tools"))
-import export_notebooks as ex  # noqa: E402
-from classroom_labels import scan  # noqa: E402
+from tests.conftest import BOOK, ROOT
+from tools.classroom import export as ex
+from tools.classroom.labels import scan
 
 BOOK_INDEX = scan(BOOK)
 PAGES = BOOK_INDEX.exported
@@ -115,20 +114,20 @@ def test_both_editions_run_in_the_plain_venv(page: str, plain_venv: Path, tmp_pa
 
 
 # One student notebook, as it ran in the plain venv, pictured as JupyterLab renders it
-# (tools/notebook_screenshot.py: nbconvert's lab template, local MathJax, headless Chromium),
+# (tools/figures/screenshot.py: nbconvert's lab template, local MathJax, headless Chromium),
 # kept in the build for a person to look at.
 SCREENSHOT_PAGE = "energy"
 SCREENSHOTS = BOOK / "_build" / "classroom-screenshot"
 
 
 def _screenshot(nb: nbformat.NotebookNode, cwd: Path) -> None:
-    from print_pdf import find_chromium
+    from tools.pdf.printer import find_chromium
 
     try:
         find_chromium()
     except FileNotFoundError:  # no browser: only the browser tests insist (under CI=true)
         return
-    from notebook_screenshot import screenshot
+    from tools.figures.screenshot import screenshot
 
     number = PAGES.index(SCREENSHOT_PAGE)  # 00-index, 01-intro, ... as make notebooks names them
     executed = cwd / f"{number:02d}-{SCREENSHOT_PAGE}-student.ipynb"
@@ -295,7 +294,7 @@ assert answer == 42
 :::
 """,
     "conf.py": f"""import sys
-sys.path.insert(0, {str(ROOT / 'book' / '_ext')!r})
+sys.path[:0] = [{str(ROOT / 'book' / '_ext')!r}, {str(ROOT)!r}]
 extensions = ["myst_nb", "sphinx_proof", "sphinx_exercise", "sphinxcontrib.bibtex",
               "sphinx_book_theme", "classroom"]
 myst_enable_extensions = ["dollarmath", "amsmath", "colon_fence"]
