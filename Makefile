@@ -52,7 +52,7 @@ docs: $(STAMP)
 # once here (the glued numbers of its text come from that run).
 notebooks: $(STAMP)
 	rm -rf notebooks/student notebooks/instructor
-	$(PY) tools/export_notebooks.py book notebooks --execute
+	$(PY) -m tools.classroom book notebooks --execute
 
 # The book without solutions (book/_ext/classroom.py removes them from the page sources).
 book-student: docs
@@ -61,7 +61,7 @@ book-student: docs
 # The whole book as one PDF each for instructors (solutions open) and students (none):
 # a single-page build of each, printed by headless Chromium once MathJax is done.
 pdf: docs
-	$(PY) tools/build_pdf.py book book/_build
+	$(PY) -m tools.pdf book book/_build
 
 bench: $(STAMP)
 	$(PY) benchmarks/bench_theta.py

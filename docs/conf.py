@@ -2,9 +2,13 @@
 
 from __future__ import annotations
 
-import importlib.util
+import sys
 from importlib.metadata import version as _version
 from pathlib import Path
+
+# The book's local extensions (book/_ext), found the way Sphinx documents for extensions
+# that are not installed.
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "book" / "_ext"))
 
 project = "elliptic-pendulum"
 author = "elliptic-pendulum contributors"
@@ -23,6 +27,8 @@ extensions = [
     # what follows a >>> or ... prompt is copied from an example.
     "sphinx_copybutton",
     "sphinx_book_theme",
+    # book/_ext/offline.py: MathJax served from the build, as in the book.
+    "offline",
 ]
 
 myst_enable_extensions = ["dollarmath", "amsmath", "colon_fence", "deflist"]
@@ -86,17 +92,10 @@ nitpick_ignore_regex = [
     (r"py:(class|obj)", r"(numpy\.)?float64"),
 ]
 
-# --- Offline MathJax (see book/conf.py for the reasoning) --------------------------------
-_mathjax_spec = importlib.util.find_spec("sphinx-mathjax-offline")
-if _mathjax_spec is None or _mathjax_spec.origin is None:
-    raise RuntimeError("The offline MathJax files are missing: `pip install -e '.[book]'`.")
-mathjax_path = "mathjax/tex-chtml.js"
-
 html_theme = "sphinx_book_theme"
 html_title = "elliptic-pendulum reference"
 html_static_path = [
     "_static",
-    str(Path(_mathjax_spec.origin).parent / "static"),
     # The book's reader.css and reader.js (wide formulas, signatures and tables scroll or
     # wrap on a phone), one copy for both sites.
     str(Path(__file__).resolve().parents[1] / "book" / "_static"),

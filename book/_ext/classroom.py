@@ -1,6 +1,6 @@
 """Sphinx extension: the classroom editions inside the book build, and the student book.
 
-- ``build-finished`` (html builder): tools/export_notebooks.py writes the notebooks into
+- ``build-finished`` (html builder): tools/classroom (the exporter) writes the notebooks into
   ``<outdir>/classroom/<edition>/NN-page.ipynb`` with the values this very build glued
   (myst-nb's ``jupyter_execute/<page>.glue.json``, so the notebook's text quotes exactly what
   the HTML page shows), and zips each edition as ``classroom/<name>-<edition>.zip``.
@@ -15,7 +15,6 @@
 
 from __future__ import annotations
 
-import sys
 import zipfile
 from pathlib import Path
 from typing import Any
@@ -23,13 +22,9 @@ from typing import Any
 from sphinx.application import Sphinx
 from sphinx.util import logging
 
-TOOLS = Path(__file__).resolve().parents[2] / "tools"
-if str(TOOLS) not in sys.path:
-    sys.path.insert(0, str(TOOLS))
-
-import export_notebooks  # noqa: E402
-from classroom_labels import scan  # noqa: E402
-from classroom_markdown import strip_solutions  # noqa: E402
+from tools.classroom import export as export_notebooks
+from tools.classroom.labels import scan
+from tools.classroom.markdown import strip_solutions
 
 logger = logging.getLogger(__name__)
 FOLDER = "classroom"

@@ -2,7 +2,7 @@
 
 ``notebooks/student/NN-page.ipynb`` and ``notebooks/instructor/NN-page.ipynb``, NN the reading
 order of the book's toctree (00 is the first page, which lists the chapters). Markdown is plain
-(see classroom_markdown.py); exercises keep the book's numbers (classroom_labels.py). Student:
+(see markdown.py); exercises keep the book's numbers (labels.py). Student:
 each exercise is followed by an empty code cell and the solutions are left out. Instructor:
 each solution opens with a "Solution to Exercise N" heading, then its worked cells.
 
@@ -15,7 +15,7 @@ myst-nb formats ``{glue:text}`name:fmt``` so integers stay integers.
 
 Usage::
 
-    python tools/export_notebooks.py book notebooks [--execute | --glue-from DIR]
+    python -m tools.classroom book notebooks [--execute | --glue-from DIR]
 """
 
 from __future__ import annotations
@@ -29,11 +29,12 @@ from pathlib import Path
 
 import jupytext
 import nbformat
-from classroom_bib import label as bib_label
-from classroom_bib import load as load_bib
-from classroom_bib import reference_line
-from classroom_labels import Book, scan
-from classroom_markdown import SENTINEL, Context, convert_markdown
+
+from .bib import label as bib_label
+from .bib import load as load_bib
+from .bib import reference_line
+from .labels import Book, scan
+from .markdown import SENTINEL, Context, convert_markdown
 
 EDITIONS = ("student", "instructor")
 GLUE_IMPORT = re.compile(r"^\s*from\s+myst_nb\s+import\s+glue\s*$", re.MULTILINE)
@@ -178,7 +179,7 @@ def export_page(
         cells.append(nbformat.v4.new_markdown_cell(
             "## References\n\n" + "\n".join(reference_line(k, bib[k]) for k in keys)))
     note = (f"*Classroom notebook ({edition} edition) generated from `book/{page}.md` by "
-            "`tools/export_notebooks.py`: edit the book page, not this file.*")
+            "`python -m tools.classroom`: edit the book page, not this file.*")
     out = nbformat.v4.new_notebook()
     out.cells = [nbformat.v4.new_markdown_cell(note), *cells]
     out.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",

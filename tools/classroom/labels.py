@@ -16,7 +16,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 import jupytext
-from classroom_markdown import DIRECTIVE_OPEN, HEADING, OPTION, TARGET, Target
+
+from .markdown import DIRECTIVE_OPEN, HEADING, OPTION, TARGET, Target
 
 # Pages of the book that are not lessons and cannot run away from it: the registry of checks
 # reads the book's own .md files (registry.scan) and displays MyST tables. They keep their

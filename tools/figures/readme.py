@@ -1,6 +1,6 @@
 """Draw the README's figure, the phase portrait (the note's Fig. 2), from the library.
 
-Run from the repository root: ``python tools/readme_figure.py``. The PNG is committed so
+Run from the repository root: ``python -m tools.figures.readme``. The PNG is committed so
 that the README shows it on any code host; rerun this after changing the plotting code.
 """
 
@@ -14,7 +14,7 @@ import matplotlib.pyplot as plt  # noqa: E402 - after choosing the backend
 
 import elliptic_pendulum.plotting as epp  # noqa: E402
 
-OUT = Path(__file__).resolve().parent.parent / "docs" / "_static" / "phase_portrait.png"
+OUT = Path(__file__).resolve().parents[2] / "docs" / "_static" / "phase_portrait.png"
 
 fig, ax = plt.subplots(figsize=(9, 4.2), layout="constrained")
 epp.phase_portrait(ax=ax)

@@ -4,7 +4,7 @@ headless Chromium.
 
 Usage::
 
-    python tools/notebook_screenshot.py NOTEBOOK.ipynb OUT.png [--width 1000 --height 2400]
+    python -m tools.figures.screenshot NOTEBOOK.ipynb OUT.png [--width 1000 --height 2400]
 
 Run the notebook first (its outputs are part of the picture); the HTML is kept next to the PNG.
 """
@@ -19,7 +19,8 @@ from pathlib import Path
 
 import nbformat
 from nbconvert import HTMLExporter
-from print_pdf import find_chromium
+
+from ..pdf.printer import find_chromium
 
 
 def local_mathjax() -> str:

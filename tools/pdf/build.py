@@ -2,14 +2,14 @@
 
 Each is a Sphinx ``singlehtml`` build of the whole book (the student one with
 ``-D hide_solutions=1``, which book/_ext/classroom.py turns into "no solutions at all"),
-printed by headless Chromium (tools/print_pdf.py) once MathJax has typeset it. Why Chromium
+printed by headless Chromium (tools/pdf/printer.py) once MathJax has typeset it. Why Chromium
 and not LaTeX: the tests already need Debian's chromium, the PDF then shows exactly what the
 HTML book shows (myst-nb outputs, MathJax, the figures), and TeX Live would add a large
 install to CI. ``make pdf`` runs this with the build folder book/_build.
 
 Usage::
 
-    python tools/build_pdf.py book book/_build [--execution-cache DIR]
+    python -m tools.pdf book book/_build [--execution-cache DIR]
 """
 
 from __future__ import annotations
@@ -21,7 +21,7 @@ import sys
 import time
 from pathlib import Path
 
-from print_pdf import print_pdf
+from .printer import print_pdf
 
 EDITIONS = {"book": (".", [], True), "book-student": ("student", ["-D", "hide_solutions=1"], False)}
 

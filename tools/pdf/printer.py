@@ -10,7 +10,7 @@ keeps figures whole. Everything is local: no network is used.
 
 Usage::
 
-    python tools/print_pdf.py book/_build/singlehtml/index.html book/_build/pdf/book.pdf
+    python -m tools.pdf.printer book/_build/singlehtml/index.html book/_build/pdf/book.pdf
 """
 
 from __future__ import annotations

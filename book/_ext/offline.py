@@ -1,0 +1,62 @@
+"""Sphinx extension: a built site loads nothing from the network, and links the reference locally.
+
+Shared by the book and the reference site (``book/conf.py`` and ``docs/conf.py`` list it):
+
+* MathJax. Sphinx 9 loads MathJax 3 from a CDN by default; the sites must render offline.
+  The wheel ``sphinx-mathjax-offline`` (a book extra in pyproject.toml) ships MathJax 3.2.2
+  (tex-chtml.js and its woff fonts) as plain files. Its own Sphinx hook sets ``mathjax_path``
+  from inside ``setup()``, which is fragile, so it is not loaded as an extension: its files
+  are copied with ``html_static_path`` (to ``_static/mathjax/``) and ``mathjax_path`` points
+  at that copy. tests/book/test_book_build.py checks that no script or stylesheet comes from
+  http(s); tests/book/test_browser.py that the math is typeset offline.
+* The reference site. With ``reference_site`` set to a built reference (a folder holding
+  ``objects.inv``), ``{py:func}`` roles link to its API entries through intersphinx, reading
+  the inventory from disk, never from the network, with links relative to this build's
+  output folder, so that they work from file:// and need no server. Only Python objects
+  resolve implicitly: a ``{ref}`` or ``{doc}`` never lands in the reference by accident.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import os
+from pathlib import Path
+from typing import Any
+
+from sphinx.application import Sphinx
+from sphinx.config import Config
+
+
+def _mathjax_files() -> str:
+    spec = importlib.util.find_spec("sphinx-mathjax-offline")
+    if spec is None or spec.origin is None:
+        raise RuntimeError(
+            "The offline MathJax files are missing: install the book extra, "
+            "`pip install -e '.[book]'` (or run `make book`, which does it)."
+        )
+    return str(Path(spec.origin).parent / "static")
+
+
+def _configure(app: Sphinx, config: Config) -> None:
+    config.html_static_path = [*config.html_static_path, _mathjax_files()]
+    config.mathjax_path = "mathjax/tex-chtml.js"
+    if config.reference_site:
+        site = Path(config.reference_site).resolve()
+        if not (site / "objects.inv").is_file():
+            raise RuntimeError(
+                f"The reference site's inventory {site / 'objects.inv'} is missing: the book "
+                "links to it. Build the docs first (`make docs`, which `make book` does), or "
+                "set ELLIPTIC_PENDULUM_DOCS_HTML to a docs build."
+            )
+        # The relative URI needs the output folder, which is known only once Sphinx runs.
+        relative = os.path.relpath(site, app.outdir).replace(os.sep, "/")
+        config.intersphinx_mapping["api"] = (relative + "/", str(site / "objects.inv"))
+        config.intersphinx_disabled_reftypes = ["std:*"]
+
+
+def setup(app: Sphinx) -> dict[str, Any]:
+    """Register the extension with Sphinx."""
+    app.add_config_value("reference_site", None, "env", types=frozenset({str, type(None)}))
+    # Before intersphinx normalises its mapping (its own handler runs at priority 800).
+    app.connect("config-inited", _configure, priority=100)
+    return {"parallel_read_safe": True, "parallel_write_safe": True}
