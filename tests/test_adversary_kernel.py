@@ -8,6 +8,7 @@ mpmath takes the parameter m = k**2, formed exactly from the double k.
 """
 
 import math
+import warnings
 from fractions import Fraction
 
 import mpmath
@@ -147,3 +148,52 @@ def test_no_phase_drift_near_the_separatrix(periods):
     bound = slope * t * 1e-19 + 4 * math.ulp(math.pi)
     assert abs(motion.theta(t) - truth) <= bound, (motion.theta(t) - truth, bound)
     assert motion.theta(np.array([t]))[0] == motion.theta(t)  # array path, same bits
+
+
+# --- finding 10: no spurious floating-point warnings at the edges --------------------------
+
+def _quiet(call):
+    """Run call() with every floating-point event an error and every warning an error."""
+    with np.errstate(all="raise"), warnings.catch_warnings():
+        warnings.simplefilter("error")
+        return call()
+
+
+EDGE_K = [0.0, -0.0, 1.0, -1.0, 5e-324, 1e-300, 1e-170, 1e-9, 0.5, 1 - 2.0 ** -53]
+EDGE_KC = [0.0, 5e-324, 1e-300, 1e-170, 1e-9, 0.5, 1.0]
+EDGE_Z = [0.0, -0.0, 5e-324, 1e-300, 0.5, -1.0, 1.0]
+EDGE_U = [0.0, -0.0, 5e-324, 1e-300, 1.0, 700.0, 1e4, 1e7]
+
+
+def test_integrals_are_silent_at_the_edges():
+    # E1(0, 1) was 0 * K1 = 0 * inf (invalid), E1(1e-300, k) squared kc z (underflow).
+    for k in EDGE_K:
+        _quiet(lambda: ep.complete_integral(k))
+        for z in EDGE_Z:
+            _quiet(lambda: ep.incomplete_integral(z, k))
+            _quiet(lambda: ep.incomplete_integral(np.array([z, 0.3]), k))
+    for kc in EDGE_KC:
+        _quiet(lambda: ep.complete_integral(1.0, kc=kc))
+        for z in EDGE_Z:
+            _quiet(lambda: ep.incomplete_integral(z, 1.0, kc=kc))
+        for u in (0.0, -0.0, 1e-300, 0.5):
+            _quiet(lambda: ep.inverse_integral(u, 1.0, kc=kc))
+    # the values there: E1(+-0, k) = +-0 (an odd function), E1(z, 0) = asin z (DLMF 19.6.8)
+    for k in (1.0, 0.5):
+        assert math.copysign(1.0, _quiet(lambda: ep.incomplete_integral(0.0, k))) == 1.0
+        assert math.copysign(1.0, _quiet(lambda: ep.incomplete_integral(-0.0, k))) == -1.0
+    assert _quiet(lambda: ep.incomplete_integral(1e-300, 0.5)) == 1e-300
+    assert ep.incomplete_integral(1.0, 1.0, kc=0.0) == math.inf
+
+
+def test_jacobi_functions_are_silent_at_the_edges():
+    # am(5e-324, 0.5) took the scalar path's arctan2 of a subnormal (underflow).
+    for u in EDGE_U:
+        for k in EDGE_K:
+            _quiet(lambda: (ep.jacobi(u, k), ep.am(u, k), ep.sn(np.array([u, 0.3]), k),
+                            ep.am(np.array([u, 0.3]), k)))
+        for kc in EDGE_KC:
+            _quiet(lambda: (ep.jacobi(u, 1.0, kc=kc), ep.am(u, 1.0, kc=kc),
+                            ep.am(np.array([u, 0.3]), 1.0, kc=np.array([kc, 0.8]))))
+    # am(u) = u (1 + O(u^2)) at a subnormal u, and the scalar path gives the array's bits
+    assert _quiet(lambda: ep.am(5e-324, 0.5)) == 5e-324 == ep.am(np.array([5e-324]), 0.5)[0]

@@ -109,12 +109,14 @@ def incomplete_integral(z: npt.ArrayLike, k: npt.ArrayLike,
     if np.any(np.abs(z) > 1):
         raise ValueError("z must lie in [-1, 1]: E1(z, k) is the note's integral (17) up to z")
     k, kc, kc_lo = modulus_pair(k, kc)
-    # 1 - k^2 z^2 without cancellation at k ~ 1, z ~ 1.
-    y = (1.0 - z) * (1.0 + z) + (kc * z) ** 2
-    with np.errstate(divide="ignore", invalid="ignore"):
+    # 1 - k^2 z^2 without cancellation at k ~ 1, z ~ 1. (kc z)^2 underflows only where it is
+    # negligible beside (1 - z)(1 + z) >= 2**-53, or at z = +-1, which is overwritten below.
+    with np.errstate(divide="ignore", invalid="ignore", under="ignore"):
+        y = (1.0 - z) * (1.0 + z) + (kc * z) ** 2
         out = z * special.elliprf((1.0 - z) * (1.0 + z), y, 1.0)
-    # At z = +-1, E1 = +-K1 (18): from the AGM, which also holds where y underflows.
-    out = np.where(np.abs(z) == 1, z * _landen.quarter_period(kc, kc_lo), out)
+    # At z = +-1, E1 = +-K1 (18): from the AGM, which also holds where y underflows. The sign
+    # is copied, not multiplied in: z K1 would be 0 * inf = nan (and a warning) at z = 0, kc = 0.
+    out = np.where(np.abs(z) == 1, np.copysign(_landen.quarter_period(kc, kc_lo), z), out)
     return scalar_or_array(out, z, kc)
 
 

@@ -78,7 +78,12 @@ def evaluate(u, c, u_lo=0.0, amplitude=False, name="u", quarters=0.0):
     dn = c.kc / dn_v if odd else dn_v
     if not amplitude:
         return sn, cn, dn, None
-    am = _f(np.arctan2, ratio, 1.0) if odd else _f(np.arctan2, s, cn_v)
+    y, x = (ratio, 1.0) if odd else (s, cn_v)
+    if abs(y) < 1e-300:  # a subnormal amplitude is right; the array path ignores underflow too
+        with np.errstate(under="ignore"):
+            am = _f(np.arctan2, y, x)
+    else:
+        am = _f(np.arctan2, y, x)
     if amplitude == "split":
         return sn, cn, dn, (n, am)
     return sn, cn, dn, (n * (0.5 * PI_HI) + am) + n * (0.5 * PI_LO)
