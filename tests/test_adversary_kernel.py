@@ -197,3 +197,54 @@ def test_jacobi_functions_are_silent_at_the_edges():
                             ep.am(np.array([u, 0.3]), 1.0, kc=np.array([kc, 0.8]))))
     # am(u) = u (1 + O(u^2)) at a subnormal u, and the scalar path gives the array's bits
     assert _quiet(lambda: ep.am(5e-324, 0.5)) == 5e-324 == ep.am(np.array([5e-324]), 0.5)[0]
+
+
+# --- finding 14: return types follow scalar_or_array (float only if every input is scalar) --
+
+def _parts(f):
+    """f as a list of functions of (u, k, kc=None), one per output (jacobi has three)."""
+    if f is ep.jacobi:
+        return [lambda *a, i=i, **kw: ep.jacobi(*a, **kw)[i] for i in range(3)]
+    return [f]
+
+
+@pytest.mark.parametrize("f", [ep.sn, ep.cn, ep.dn, ep.am, ep.jacobi])
+def test_scalar_arguments_give_python_floats(f):
+    for g in _parts(f):
+        for args, kwargs in [((0.5, 0.3), {}), ((0.5, 0.3), {"kc": 0.9}), ((0.5, 2.5), {}),
+                             ((np.float64(0.5), np.array(0.3)), {}), ((1, 0), {}),
+                             ((0.5, 1.0), {"kc": np.float32(0.0)})]:
+            assert type(g(*args, **kwargs)) is float, (args, kwargs)
+
+
+@pytest.mark.parametrize("f", [ep.sn, ep.cn, ep.dn, ep.am, ep.jacobi])
+def test_any_array_argument_gives_the_broadcast_array(f):
+    # am(0.5, [.3, .4], kc=.9) was np.float64 while sn gave a float: k was forgotten.
+    u_col = np.array([0.1, -0.7, 2.0, 30.0])[:, None]
+    cases = [
+        ((0.5, np.array([0.3, 0.4])), {"kc": 0.9}, (2,)),      # k array, kc trusted over it
+        ((0.5, 0.3), {"kc": np.array([0.9, 0.2])}, (2,)),
+        ((0.5, np.array([0.3, 0.4])), {"kc": np.array([0.9, 0.2])}, (2,)),
+        ((u_col, np.array([0.0, 0.5, 1.0])), {}, (4, 3)),
+        ((u_col, 1.0), {"kc": np.array([1.0, 1e-9, 0.0])}, (4, 3)),
+        ((u_col, np.array([0.5, 1.0, 3.0])), {}, (4, 3)),     # k > 1 beside k <= 1
+        ((np.array(0.5), np.array([[0.2], [0.9]])), {"kc": 0.5}, (2, 1)),
+    ]
+    for g in _parts(f):
+        for args, kwargs, shape in cases:
+            out = g(*args, **kwargs)
+            assert isinstance(out, np.ndarray) and out.dtype == float and out.shape == shape
+            # each element is the scalar call's, bit for bit (kc, when given, decides)
+            u, k = (np.broadcast_to(a, shape) for a in args)
+            kc = np.broadcast_to(kwargs["kc"], shape) if "kc" in kwargs else None
+            for i in np.ndindex(shape):
+                extra = {"kc": float(kc[i])} if kc is not None else {}
+                assert out[i] == g(float(u[i]), float(k[i]), **extra), (args, kwargs, i)
+
+
+def test_integrals_follow_the_same_rule():
+    k, kc = np.array([0.3, 0.4]), 0.9
+    for out in (ep.complete_integral(k, kc=kc), ep.incomplete_integral(0.5, k, kc=kc),
+                ep.inverse_integral(0.5, k, kc=kc)):
+        assert isinstance(out, np.ndarray) and out.shape == (2,) and out[0] == out[1]
+    assert type(ep.complete_integral(0.3, kc=0.9)) is float

@@ -99,8 +99,11 @@ def jacobi(u: npt.ArrayLike, k: npt.ArrayLike,
     u = real_array(u, "u")
     k, kc, kc_lo = modulus_pair(k, kc, beyond_one=True)
     s, c, d, _ = _jacobi.values(u, k, kc, kc_lo)
-    return (scalar_or_array(s, u, kc), scalar_or_array(c, u, kc),
-            scalar_or_array(d, u, kc))
+    # Shaped like every argument broadcast together, k too where kc (trusted over k) is given,
+    # and a Python float only when all were scalars (the package's scalar_or_array rule).
+    shape = np.broadcast_shapes(u.shape, k.shape, np.shape(kc))
+    return tuple(scalar_or_array(x if x.shape == shape else np.array(np.broadcast_to(x, shape)),
+                                 u, k, kc) for x in (s, c, d))
 
 
 def sn(u: npt.ArrayLike, k: npt.ArrayLike, kc: npt.ArrayLike | None = None) -> FloatOrArray:
@@ -232,4 +235,7 @@ def am(u: npt.ArrayLike, k: npt.ArrayLike, kc: npt.ArrayLike | None = None) -> F
             return one[3]
     u = real_array(u, "u")
     k, kc, kc_lo = modulus_pair(k, kc, beyond_one=True)
-    return scalar_or_array(_jacobi.values(u, k, kc, kc_lo, amplitude=True)[3], u, k, kc)
+    a = _jacobi.values(u, k, kc, kc_lo, amplitude=True)[3]
+    shape = np.broadcast_shapes(u.shape, k.shape, np.shape(kc))  # as in jacobi()
+    return scalar_or_array(a if a.shape == shape else np.array(np.broadcast_to(a, shape)),
+                           u, k, kc)
