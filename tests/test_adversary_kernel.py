@@ -248,3 +248,45 @@ def test_integrals_follow_the_same_rule():
                 ep.inverse_integral(0.5, k, kc=kc)):
         assert isinstance(out, np.ndarray) and out.shape == (2,) and out[0] == out[1]
     assert type(ep.complete_integral(0.3, kc=0.9)) is float
+
+
+# --- kc = 1 with a low part is not k = 0 ----------------------------------------------------
+
+def _mp_jacobi(u, k):
+    """sn, cn, dn at 50 digits with m = k^2 exact from the double k (k <= 1 or k > 1).
+
+    For k > 1 mpmath is asked for the reciprocal modulus' functions, DLMF 22.17.2-4:
+    sn(u, k) = sn(k u, 1/k) / k, cn(u, k) = dn(k u, 1/k), dn(u, k) = cn(k u, 1/k), with
+    k u and 1/k^2 formed in 50 digits (m = k^2 > 1 directly is slow and complex in mpmath).
+    """
+    ctx = _context(50)
+    K, U = ctx.mpf(k), ctx.mpf(u)
+    if k <= 1:
+        return [float(ctx.ellipfun(f, U, m=K * K)) for f in ("sn", "cn", "dn")]
+    x, m = K * U, 1 / (K * K)
+    return [float(ctx.ellipfun("sn", x, m=m) / K), float(ctx.ellipfun("dn", x, m=m)),
+            float(ctx.ellipfun("cn", x, m=m))]
+
+
+def _ulps(got, exact):
+    return abs(got - exact) / math.ulp(exact)
+
+
+@pytest.mark.parametrize(("u", "k"), [
+    (1e6, 1e-9), (3e4, 3e-9), (1e5, 1e-8),     # tiny k: kc rounds to 1, kc_lo = -k^2/2
+    (1e-2, 1e10), (5.000000000001e-8, 1e15), (1.0, 1e8), (-3e-9, 2.0 ** 40)])  # through 1/k
+def test_modulus_whose_complement_rounds_to_one(u, k):
+    # kc = 1.0 (+ kc_lo) was taken for k = 0, sin and cos: but K exceeds pi/2 by k^2 pi/8 and
+    # the phase slips by k^2 u / 4: sn(1e6, 1e-9) was off by 4219 ulp, sn(1e-2, 1e10) by
+    # 5.9e6 and dn by 3.5e7. Reference: mpmath at 50 digits.
+    got = ep.jacobi(u, k)
+    for value, exact in zip(got, _mp_jacobi(u, k), strict=True):
+        assert _ulps(value, exact) <= 2, (u, k, got)
+    assert [ep.sn(np.array([u]), k)[0], ep.am(np.array([u]), k)[0]] == [got[0], ep.am(u, k)]
+
+
+def test_tiny_modulus_beyond_exact_reduction_raises():
+    # Beyond 2**26 quarter periods the reduction is no longer exact (now that tiny k takes it).
+    with pytest.raises(ValueError, match="^u is too large"):
+        ep.sn(1e9, 1e-9)
+    assert ep.sn(1e9, 0.0) == math.sin(1e9)  # k = 0 exactly needs no reduction

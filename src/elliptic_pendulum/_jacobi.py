@@ -23,7 +23,10 @@ def _ordinary(u, kc, kc_lo, amplitude, u_lo=0.0):
     """sn, cn, dn (and am) for kc (+ kc_lo) in [0, 1]."""
     c = _landen.constants(np.where(kc == 0, 1.0, kc), np.where(kc == 0, 0.0, kc_lo))
     # The edges k = 0 and kc = 0 are overwritten below, for any u: keep them out of the reduction.
-    edge = (kc == 0) | (kc == 1)
+    # kc = 1 with a low part is not k = 0 (a tiny k, or a huge one through 1/k): its K exceeds
+    # pi/2 by k^2 pi/8, which shifts the phase by k^2 u / 4, so it takes the recurrence.
+    circular = (kc == 1) & (kc_lo == 0)
+    edge = (kc == 0) | circular
     sn_, cn_, dn_, am_ = _landen.evaluate(np.where(edge, 0.0, u), c, np.where(edge, 0.0, u_lo),
                                           amplitude=amplitude)
     if np.any(kc == 0):
@@ -34,13 +37,19 @@ def _ordinary(u, kc, kc_lo, amplitude, u_lo=0.0):
         dn_ = np.where(kc == 0, sech, dn_)
         if amplitude:
             am_ = np.where(kc == 0, _landen.gudermannian(u), am_)
-    if np.any(kc == 1):
-        # k = 0: the circular functions, exactly.
-        sn_ = np.where(kc == 1, np.sin(u), sn_)
-        cn_ = np.where(kc == 1, np.cos(u), cn_)
-        dn_ = np.where(kc == 1, 1.0, dn_)
+    if np.any(circular):
+        # k = 0: the circular functions, exactly; of u + u_lo where a low part is given (k u
+        # for a k so large that 1/k^2 underflows), by the addition theorem.
+        s, c = np.sin(u), np.cos(u)
+        if np.any(circular & (u_lo != 0)):
+            s_lo, c_lo = np.sin(u_lo), np.cos(u_lo)
+            s, c = (np.where(u_lo == 0, s, s * c_lo + c * s_lo),
+                    np.where(u_lo == 0, c, c * c_lo - s * s_lo))
+        sn_ = np.where(circular, s, sn_)
+        cn_ = np.where(circular, c, cn_)
+        dn_ = np.where(circular, 1.0, dn_)
         if amplitude:
-            am_ = np.where(kc == 1, u, am_)
+            am_ = np.where(circular, u, am_)
     return sn_, cn_, dn_, am_
 
 
