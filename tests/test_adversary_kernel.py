@@ -290,3 +290,62 @@ def test_tiny_modulus_beyond_exact_reduction_raises():
     with pytest.raises(ValueError, match="^u is too large"):
         ep.sn(1e9, 1e-9)
     assert ep.sn(1e9, 0.0) == math.sin(1e9)  # k = 0 exactly needs no reduction
+
+
+# --- finding 6: every finite k, however large ---------------------------------------------
+
+def test_huge_modulus_example():
+    # sn(1e-155, 1e155) raised "AGM did not converge" ((k - 1)(k + 1) overflowed). DLMF 22.17:
+    # sn(u, k) = sn(k u, 1/k) / k = sn(1, 1e-155) / 1e155 = sin(1) / 1e155 to 1e-310.
+    exact = float(MP60.sin(1) / MP60.mpf(1e155))
+    assert _quiet(lambda: ep.sn(1e-155, 1e155)) == exact
+    assert _quiet(lambda: ep.cn(1e-155, 1e155)) == 1.0  # dn(1, 1e-155) = 1 - 3.5e-311
+    # dn = cn(1, 1e-155) = cos(1) - 1e-310: the recurrence's 1/hypot(1, tan 1) is an ulp off
+    assert _ulps(_quiet(lambda: ep.dn(1e-155, 1e155)), float(MP60.cos(1))) <= 1
+
+
+def test_huge_modulus_matches_mpmath():
+    # k from 2 to 1.7e308, k u from 1e-5 to 8e7 (below 2**26 quarter periods): sn, cn, dn and
+    # am within 4 ulp (measured 3) of mpmath at 50 digits through DLMF 22.17 (_mp_jacobi).
+    rng = np.random.default_rng(104)
+    k = 10.0 ** rng.uniform(0.3, 308.2, 150)
+    u = rng.choice([-1.0, 1.0], 150) * 10.0 ** rng.uniform(-5, 7.9, 150) / k
+    s, c, d = _quiet(lambda: ep.jacobi(u, k))
+    a = _quiet(lambda: ep.am(u, k))
+    ctx = _context(50)
+    for i in range(k.size):
+        exact = _mp_jacobi(u[i], k[i])
+        for value, e in zip((s[i], c[i], d[i]), exact, strict=True):
+            assert _ulps(value, e) <= 4, (u[i], k[i])
+        # am = atan2(sn, cn), in (-pi/2, pi/2) for k > 1 (cn = dn(k u, 1/k) > 0)
+        exact_am = float(ctx.atan2(ctx.ellipfun("sn", ctx.mpf(k[i]) * ctx.mpf(u[i]),
+                                                m=1 / ctx.mpf(k[i]) ** 2) / ctx.mpf(k[i]),
+                                   ctx.mpf(exact[1])))
+        assert _ulps(a[i], exact_am) <= 4, (u[i], k[i])
+        # alone and in the batch, and on the scalar path: the same bits
+        assert ep.jacobi(float(u[i]), float(k[i])) == (s[i], c[i], d[i])
+        assert ep.am(float(u[i]), float(k[i])) == a[i]
+
+
+def test_huge_modulus_does_not_poison_an_array():
+    u = np.array([1e-155, 0.3, 1e-299, -2.0, 5e-324])
+    k = np.array([1e155, 0.5, 1e300, 1.0, 1.7e308])
+    s, c, d = _quiet(lambda: ep.jacobi(u, k))
+    for i in range(u.size):
+        assert ep.jacobi(float(u[i]), float(k[i])) == (s[i], c[i], d[i])
+    # DLMF 22.17.2 in 60 digits; sin(k u) / k rounds twice (1/k^2 underflows: sn = sin here)
+    assert s[0] == float(MP60.sin(1) / MP60.mpf(1e155))
+    assert _ulps(s[2], float(MP60.sin(MP60.mpf(1e-299) * MP60.mpf(1e300)) / MP60.mpf(1e300))) <= 1
+
+
+def test_modulus_limits_are_value_errors():
+    with pytest.raises(ValueError, match=r"^k must be finite"):
+        ep.sn(0.5, math.inf)
+    with pytest.raises(ValueError, match=r"^u is too large"):
+        ep.sn(1.0, 1e10)       # k u = 1e10: beyond 2**26 quarter periods K(1/k) = pi/2
+    # past k = 2**537, 1/k^2 underflows: sn(k u, 1/k) = sin(k u) (the phase slip k u / (4 k^2)
+    # is below 1e-35 for k u <= 1e290) needs no reduction
+    assert _ulps(ep.sn(1e-100, 1e300),
+                 float(MP60.sin(MP60.mpf(1e-100) * MP60.mpf(1e300)) / MP60.mpf(1e300))) <= 1
+    with pytest.raises(ValueError, match=r"^u is too large"):
+        ep.sn(1.0, 1e300)      # k u = 1e300 > 1e290

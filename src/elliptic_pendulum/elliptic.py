@@ -78,7 +78,10 @@ def jacobi(u: npt.ArrayLike, k: npt.ArrayLike,
     1e-15 relative, for ``|u|`` up to 1e4 and every kc from 1 down to 0.
     The reduction by quarter periods is exact up to 2**26 quarter periods
     (about 6.7e7 K1); beyond, a ValueError names ``u`` (except at k = 0 and
-    kc = 0, which need no reduction).
+    kc = 0, which need no reduction). For ``|k| > 1`` the argument is k u
+    (DLMF 22.17), which must stay within 2**26 quarter periods K1(1/k) (except
+    past ``|k| = 2**537``, where the functions are circular) and below 1e290;
+    every finite k works, an infinite one is refused (ValueError naming k).
 
     Examples
     --------
