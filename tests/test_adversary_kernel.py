@@ -349,3 +349,38 @@ def test_modulus_limits_are_value_errors():
                  float(MP60.sin(MP60.mpf(1e-100) * MP60.mpf(1e300)) / MP60.mpf(1e300))) <= 1
     with pytest.raises(ValueError, match=r"^u is too large"):
         ep.sn(1.0, 1e300)      # k u = 1e300 > 1e290
+
+
+# --- finding 16 (part): the Landen recurrence's last level must be circular to 2.5e-17 ----
+
+def test_landen_levels_end_circular():
+    # `core` starts the descending recurrence from the last AGM level as if its modulus were 0;
+    # that level's k_n^2 = 1 - (b_n/a_n)^2 is the relative error made there. GSL's stop (a, b
+    # agreeing to 4e-16) left up to 1.6e-15, 7 ulp in cn and dn. Reference: the AGM of the
+    # exact double kc, run in mpmath at 60 digits for as many steps as the library took.
+    from elliptic_pendulum import _landen, _scalar
+    rng = np.random.default_rng(105)
+    for kc in np.concatenate([rng.uniform(0.0, 1.0, 300), 10.0 ** rng.uniform(-17, 0, 300)]):
+        c = _landen.constants(float(kc))
+        steps = len(c.mu) - 1  # one modulus alone: its last level is where it froze
+        a, b = MP60.mpf(1), MP60.mpf(float(kc))
+        for _ in range(steps):
+            a, b = (a + b) / 2, MP60.sqrt(a * b)
+        assert 1 - (b / a) ** 2 <= 2.5e-17, (kc, steps)
+        assert _scalar.landen(float(kc), 0.0) == c  # the scalar mirror, to the bit
+
+
+def test_near_one_from_above_boost_like_rows():
+    # Rows in the style of Boost's jacobi_near_1 table (k = 1 + small, u ~ +-4): cn and dn
+    # were 15 ulp off at worst; the circular last level brings them to 12 (mean 1.8 ulp). The
+    # rest is the rounding of the double-precision recurrence. Reference: mpmath, 50 digits.
+    ks = [1.000000476837158203125, 1.000003337860107421875, 1.000029087066650390625,
+          1.0000996589660644531250, 1.00026798248291015625, 1.00124835968017578125]
+    us = np.array([-4.02459716796875, -3.73013210296630859375]
+                  + list(np.linspace(-4.5, 4.5, 37) + 0.0123))
+    for k in ks:
+        s, c, d = ep.jacobi(us, k)
+        for i, u in enumerate(us):
+            exact = _mp_jacobi(u, k)
+            assert _ulps(s[i], exact[0]) <= 5 and _ulps(c[i], exact[1]) <= 12
+            assert _ulps(d[i], exact[2]) <= 12, (u, k)

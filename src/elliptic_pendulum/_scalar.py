@@ -207,11 +207,11 @@ def _half_angle(th):
 @lru_cache(maxsize=256)
 def _agm(kc: float, kc_lo: float) -> _landen.Constants:
     a, b = 1.0, kc
-    done = abs(a - b) <= 4e-16 * (a + b)
+    done = a == b  # as in _landen._constants: one step past a, b within 1e-8
     mu, nu = [a], [a if done else b]
     while not done:
+        done = abs(a - b) <= 1e-8 * a
         a, b = 0.5 * (a + b), math.sqrt(a * b)
-        done = abs(a - b) <= 4e-16 * (a + b)
         mu.append(a)
         nu.append(a if done else b)
     ah, al = 1.0, 0.0
