@@ -68,7 +68,11 @@ def complete_integral(k: npt.ArrayLike, kc: npt.ArrayLike | None = None) -> Floa
     True
     """
     k, kc, kc_lo = modulus_pair(k, kc)
-    return scalar_or_array(_landen.quarter_period(kc, kc_lo), kc)
+    K = _landen.quarter_period(kc, kc_lo)
+    # Shaped like k and kc broadcast together (k too, where kc is given and trusted over it).
+    shape = np.broadcast_shapes(k.shape, np.shape(kc))
+    return scalar_or_array(K if K.shape == shape else np.array(np.broadcast_to(K, shape)),
+                           k, kc)
 
 
 def incomplete_integral(z: npt.ArrayLike, k: npt.ArrayLike,
@@ -109,13 +113,17 @@ def incomplete_integral(z: npt.ArrayLike, k: npt.ArrayLike,
     if np.any(np.abs(z) > 1):
         raise ValueError("z must lie in [-1, 1]: E1(z, k) is the note's integral (17) up to z")
     k, kc, kc_lo = modulus_pair(k, kc)
-    # 1 - k^2 z^2 without cancellation at k ~ 1, z ~ 1.
-    y = (1.0 - z) * (1.0 + z) + (kc * z) ** 2
-    with np.errstate(divide="ignore", invalid="ignore"):
+    # 1 - k^2 z^2 without cancellation at k ~ 1, z ~ 1. (kc z)^2 underflows only where it is
+    # negligible beside (1 - z)(1 + z) >= 2**-53, or at z = +-1, which is overwritten below.
+    with np.errstate(divide="ignore", invalid="ignore", under="ignore"):
+        y = (1.0 - z) * (1.0 + z) + (kc * z) ** 2
         out = z * special.elliprf((1.0 - z) * (1.0 + z), y, 1.0)
-    # At z = +-1, E1 = +-K1 (18): from the AGM, which also holds where y underflows.
-    out = np.where(np.abs(z) == 1, z * _landen.quarter_period(kc, kc_lo), out)
-    return scalar_or_array(out, z, kc)
+    # At z = +-1, E1 = +-K1 (18): from the AGM, which also holds where y underflows. The sign
+    # is copied, not multiplied in: z K1 would be 0 * inf = nan (and a warning) at z = 0, kc = 0.
+    out = np.where(np.abs(z) == 1, np.copysign(_landen.quarter_period(kc, kc_lo), z), out)
+    shape = np.broadcast_shapes(z.shape, k.shape, np.shape(kc))  # k too, as in sn
+    return scalar_or_array(out if out.shape == shape else np.array(np.broadcast_to(out, shape)),
+                           z, k, kc)
 
 
 def inverse_integral(u: npt.ArrayLike, k: npt.ArrayLike,
@@ -152,4 +160,7 @@ def inverse_integral(u: npt.ArrayLike, k: npt.ArrayLike,
     if np.any(np.abs(u) > K):
         raise ValueError("u must lie in [-K1(k), K1(k)]: G is the inverse of E1 on that "
                          "interval only (use sn for the extension to all u)")
-    return scalar_or_array(_jacobi.values(u, k, kc, kc_lo)[0], u, kc)
+    z = _jacobi.values(u, k, kc, kc_lo)[0]
+    shape = np.broadcast_shapes(u.shape, k.shape, np.shape(kc))  # k too, as in sn
+    return scalar_or_array(z if z.shape == shape else np.array(np.broadcast_to(z, shape)),
+                           u, k, kc)

@@ -77,7 +77,10 @@ def jacobi(u: npt.ArrayLike, k: npt.ArrayLike,
     1e-15 relative, for ``|u|`` up to 1e4 and every kc from 1 down to 0.
     The reduction by quarter periods is exact up to 2**26 quarter periods
     (about 6.7e7 K1); beyond, a ValueError names ``u`` (except at k = 0 and
-    kc = 0, which need no reduction).
+    kc = 0, which need no reduction). For ``|k| > 1`` the argument is k u
+    (DLMF 22.17), which must stay within 2**26 quarter periods K1(1/k) (except
+    past ``|k| = 2**537``, where the functions are circular) and below 1e290;
+    every finite k works, an infinite one is refused (ValueError naming k).
 
     Examples
     --------
@@ -98,8 +101,11 @@ def jacobi(u: npt.ArrayLike, k: npt.ArrayLike,
     u = real_array(u, "u")
     k, kc, kc_lo = modulus_pair(k, kc, beyond_one=True)
     s, c, d, _ = _jacobi.values(u, k, kc, kc_lo)
-    return (scalar_or_array(s, u, kc), scalar_or_array(c, u, kc),
-            scalar_or_array(d, u, kc))
+    # Shaped like every argument broadcast together, k too where kc (trusted over k) is given,
+    # and a Python float only when all were scalars (the package's scalar_or_array rule).
+    shape = np.broadcast_shapes(u.shape, k.shape, np.shape(kc))
+    return tuple(scalar_or_array(x if x.shape == shape else np.array(np.broadcast_to(x, shape)),
+                                 u, k, kc) for x in (s, c, d))
 
 
 def sn(u: npt.ArrayLike, k: npt.ArrayLike, kc: npt.ArrayLike | None = None) -> FloatOrArray:
@@ -231,4 +237,7 @@ def am(u: npt.ArrayLike, k: npt.ArrayLike, kc: npt.ArrayLike | None = None) -> F
             return one[3]
     u = real_array(u, "u")
     k, kc, kc_lo = modulus_pair(k, kc, beyond_one=True)
-    return scalar_or_array(_jacobi.values(u, k, kc, kc_lo, amplitude=True)[3], u, k, kc)
+    a = _jacobi.values(u, k, kc, kc_lo, amplitude=True)[3]
+    shape = np.broadcast_shapes(u.shape, k.shape, np.shape(kc))  # as in jacobi()
+    return scalar_or_array(a if a.shape == shape else np.array(np.broadcast_to(a, shape)),
+                           u, k, kc)

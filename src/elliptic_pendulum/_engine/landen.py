@@ -63,16 +63,21 @@ def _constants(kc: Any, kc_lo: Any = 0.0) -> Constants:
     top = kc == 0  # the separatrix: K = inf; run the AGM on a harmless stand-in
     kc_lo = np.where(top, 0.0, kc_lo)
     kc = np.where(top, 1.0, kc)
-    # Double precision AGM for the Landen recurrence. Each element stops as GSL does, once its
-    # a_n and b_n agree to a few ulp; from there on its levels repeat a_n with b = a, which
-    # makes the extra steps of the recurrence in `core` exact identities (d = 1). So an
-    # element gets the same bits alone or beside a slower modulus (no dependence on the batch).
+    # Double precision AGM for the Landen recurrence. The recurrence in `core` starts from the
+    # last level as if it were circular, which is off by that level's k_n^2 = 1 - (b_n/a_n)^2
+    # ~ 2 (a_n - b_n)/a_n: GSL's stop, once a_n and b_n agree to a few ulp, leaves up to
+    # 1.6e-15 (7 ulp in dn and cn, measured near k = 1). So an element stops one step after
+    # its a and b agree to 1e-8, where a_n - b_n ~ (a - b)^2 / (8 a) puts k_n^2 below 2.5e-17
+    # (kc = 1 is circular at once). From there on its levels repeat a_n with b = a, which
+    # makes the extra steps of the recurrence exact identities (d = 1). So an element gets
+    # the same bits alone or beside a slower modulus (no dependence on the batch).
     a, b = np.ones_like(kc), kc.copy()
-    done = np.abs(a - b) <= 4e-16 * (a + b)
+    done = a == b
     mu, nu = [a], [np.where(done, a, b)]
     while not np.all(done):
+        near = np.abs(a - b) <= 1e-8 * a
         a, b = np.where(done, a, 0.5 * (a + b)), np.where(done, b, np.sqrt(a * b))
-        done = done | (np.abs(a - b) <= 4e-16 * (a + b))
+        done = done | near
         mu.append(a)
         nu.append(np.where(done, a, b))
         if len(mu) > 40:  # cannot happen for kc in (0, 1]; guards a bug

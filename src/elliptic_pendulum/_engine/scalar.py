@@ -77,7 +77,12 @@ def evaluate(u, c, u_lo=0.0, amplitude=False, name="u", quarters=0.0):
     dn = c.kc / dn_v if odd else dn_v
     if not amplitude:
         return sn, cn, dn, None
-    am = _f(np.arctan2, ratio, 1.0) if odd else _f(np.arctan2, s, cn_v)
+    y, x = (ratio, 1.0) if odd else (s, cn_v)
+    if abs(y) < 1e-300:  # a subnormal amplitude is right; the array path ignores underflow too
+        with np.errstate(under="ignore"):
+            am = _f(np.arctan2, y, x)
+    else:
+        am = _f(np.arctan2, y, x)
     if amplitude == "split":
         return sn, cn, dn, (n, am)
     return sn, cn, dn, (n * (0.5 * PI_HI) + am) + n * (0.5 * PI_LO)
@@ -201,11 +206,11 @@ def _half_angle(th):
 @lru_cache(maxsize=256)
 def _agm(kc: float, kc_lo: float) -> _landen.Constants:
     a, b = 1.0, kc
-    done = abs(a - b) <= 4e-16 * (a + b)
+    done = a == b  # as in _landen._constants: one step past a, b within 1e-8
     mu, nu = [a], [a if done else b]
     while not done:
+        done = abs(a - b) <= 1e-8 * a
         a, b = 0.5 * (a + b), math.sqrt(a * b)
-        done = abs(a - b) <= 4e-16 * (a + b)
         mu.append(a)
         nu.append(a if done else b)
     ah, al = 1.0, 0.0
