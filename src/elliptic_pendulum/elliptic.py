@@ -33,14 +33,13 @@ R_F (DLMF 19.25.5) with 1 - k^2 z^2 written as (1 - z)(1 + z) + kc^2 z^2.
 
 from __future__ import annotations
 
+import numpy as np
 import numpy.typing as npt
 
 from ._engine import jacobi as _jacobi
 from ._engine import scalar as _scalar
 from ._integrals import complete_integral, incomplete_integral, inverse_integral
 from ._validation import FloatOrArray, modulus_pair, real_array, scalar_or_array
-
-# What the functions return: a Python float for scalar arguments, else an array.
 
 __all__ = ["complete_integral", "incomplete_integral", "inverse_integral",
            "jacobi", "sn", "cn", "dn", "am"]

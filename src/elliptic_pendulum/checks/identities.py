@@ -307,7 +307,7 @@ def identities() -> list[Identity]:
 
 
 def identity(name: str) -> Identity:
-    """Return the correct statement called ``name`` (see :func:`identities` for the names).
+    """Return the correct statement called ``name`` (see :func:`.identities` for the names).
 
     Examples
     --------

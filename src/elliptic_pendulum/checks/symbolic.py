@@ -4,7 +4,7 @@ Every statement is an :class:`Identity`: the note's location, a left and a right
 (``sympy.latex``), and :meth:`Identity.check`, True iff ``sympy.simplify`` reduces the residual
 to 0.
 The book shows and checks a statement in one cell, and ``tests/test_symbolic.py`` checks the very
-same objects. :func:`identities` lists the correct statements in the note's order, (1)-(46);
+same objects. :func:`.identities` lists the correct statements in the note's order, (1)-(46);
 :func:`.printed_errata` lists the places where the note prints something
 else, with the printed statement as an Identity whose check fails.
 

@@ -85,7 +85,7 @@ def identity(ident: _Identity, *, show: bool = True) -> Verdict:
 
     Parameters
     ----------
-    ident : elliptic_pendulum.symbolic.Identity
+    ident : elliptic_pendulum.checks.symbolic.Identity
         The statement; ``ident.mutant_identity()`` (when ``ident.mutant`` is set) is the same
         statement with the mutated right-hand side.
     show : bool

@@ -1,6 +1,6 @@
 """Mechanics: the forces on the bob, for a rod and for a string.
 
-* :mod:`.rod` -- :class:`Pendulum`, a rod of length l: position, tension, energy of (4);
+* :mod:`.rod` -- :class:`.Pendulum`, a rod of length l: position, tension, energy of (4);
 * :mod:`.string` -- a string, which goes slack where the rod would push: when it does, the
   free flight, and whether it stays taut.
 """

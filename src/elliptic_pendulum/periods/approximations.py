@@ -8,7 +8,7 @@ Each agrees with R to the order stated, which the tests measure against mpmath:
 ========================  ====================================================  =================
 function                  formula                                               error, small A
 ========================  ====================================================  =================
-series (2 or 4 terms)     :func:`~elliptic_pendulum.periods.series.period_series`       next term
+series (2 or 4 terms)     :func:`.period_series`                                next term
 ``agm_ratio(A, n)``       :math:`1/a_n`, n steps of the AGM from (1, cos(A/2))  squares each step
 ``log_ratio(A, terms)``   :math:`(2/\pi)\log(4/k_c)` (+ the next term)          exact at the top
 ``kidd_fogg_ratio``       :math:`1/\sqrt{\cos(A/2)}` (Kidd and Fogg, 2002)      :math:`A^4/1024`

@@ -129,7 +129,7 @@ def plot_response(curve: ResponseCurve, ax: Any = None, *, color: str = "C0",
 
     Parameters
     ----------
-    curve : elliptic_pendulum.driven.ResponseCurve
+    curve : elliptic_pendulum.driven.continuation.ResponseCurve
         From :func:`~elliptic_pendulum.driven.continuation.response_curve`.
     ax : matplotlib.axes.Axes, optional
         Where to draw; a new figure when None.
@@ -227,7 +227,7 @@ def plot_sweep(curve: ResponseCurve, up: Any, down: Any, ax: Any = None) -> Any:
 
     Parameters
     ----------
-    curve : elliptic_pendulum.driven.ResponseCurve
+    curve : elliptic_pendulum.driven.continuation.ResponseCurve
         From :func:`~elliptic_pendulum.driven.continuation.response_curve`.
     up, down : tuple of array_like
         (Ω, A) of each half swing of the sweep up and of the sweep down.
