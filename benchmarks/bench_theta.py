@@ -2,7 +2,7 @@
 
 Prints one table per motion (a libration of 170 degrees and a rotation). Times are the best of
 several repeats with time.perf_counter, and every speed is a ratio to a run made in the same
-process, so the numbers compare across machines. The issue asks for a ratio to one bare
+process, so the numbers compare across machines. The target is a ratio to one bare
 scipy.special.ellipj call of at most 1.5 (goal 1.0).
 
     python benchmarks/bench_theta.py [--points 1000000] [--repeats 5]

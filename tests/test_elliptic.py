@@ -245,7 +245,7 @@ def test_inverse_integral_raises_beyond_k1():
 
 @pytest.mark.parametrize("one_minus_m", [1e-10, 1e-12, 1e-14])
 def test_scipy_ellipj_fails_where_ours_holds(one_minus_m):
-    # DESIGN.md: scipy.special.ellipj is unusable for 1 - m <= 1e-10 (scipy issue 8480).
+    # scipy.special.ellipj is unusable for 1 - m <= 1e-10 (scipy issue 8480).
     # Each is judged against mpmath at the parameter it was actually given.
     kc = math.sqrt(one_minus_m)
     m_scipy = 1.0 - one_minus_m

@@ -47,8 +47,8 @@ def compare(theta0, dtheta0, omega0, periods=100, n=61, record=True):
     return m, err_th, err_dth
 
 
-# Amplitudes from 1e-8 rad to pi - 1e-10 rad, including the issue's two places 1e-6 and
-# pi - 1e-6, where the naive method fails (see test_naive_method_fails_at_the_issue_places).
+# Amplitudes from 1e-8 rad to pi - 1e-10 rad, including the two places 1e-6 and
+# pi - 1e-6 where the naive method fails (see test_naive_method_fails_where_it_loses_digits).
 AMPLITUDES = [1e-8, 1e-6, 1e-4, 0.01, 0.5, 1.0, 2.0, 2.5, 3.0, 3.1, math.pi - 1e-6,
               math.pi - 1e-8, math.pi - 1e-10]
 
@@ -121,8 +121,8 @@ def naive_theta(theta0, omega0, ts):
     (math.pi - 1e-6, 1.9),    # scipy's ellipj at 1 - m = 2.5e-13: sn off by ~2 (or NaN),
                               # theta off by ~2 pi, i.e. ~2 relative to the amplitude
 ])
-def test_naive_method_fails_at_the_issue_places(amplitude, naive_error_at_least):
-    # The issue: the naive method is badly wrong at 1e-6 rad (lost digits) and by 2 pi at
+def test_naive_method_fails_where_it_loses_digits(amplitude, naive_error_at_least):
+    # The naive method is badly wrong at 1e-6 rad (lost digits) and by 2 pi at
     # pi - 1e-6; solve() is right to 1e-12 relative at both (against mpmath).
     m, err_th, err_dth = compare(amplitude, 0.0, 1.0, periods=10, n=41)
     assert err_th <= 1e-12 and err_dth <= 1e-12

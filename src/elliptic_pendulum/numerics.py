@@ -2,7 +2,8 @@
 
 The book and the benchmarks set the elliptic-function solution of :mod:`elliptic_pendulum.motion`
 beside what a general ODE solver gives, :func:`scipy.integrate.solve_ivp` on (3) written as a
-first-order system. Nothing else in the package depends on it.
+first-order system. Only the figures (:mod:`elliptic_pendulum.plotting`) use it, to draw the
+integration beside the closed form.
 """
 
 from __future__ import annotations

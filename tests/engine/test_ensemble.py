@@ -93,7 +93,7 @@ def test_indexing_length_iteration_and_state():
 
 
 def test_value_does_not_depend_on_the_batch():
-    # Item 6: bitwise, a state alone and beside 999 others (with moduli that need many more
+    # bitwise, a state alone and beside 999 others (with moduli that need many more
     # AGM steps) gives the same theta; and sn of one modulus alone and in an array.
     rng = np.random.default_rng(11)
     theta0, dtheta0, omega0 = random_states(1000, rng, near_fraction=0.2)
@@ -115,7 +115,7 @@ def test_value_does_not_depend_on_the_batch():
     (1e-12, -0.5),                                  # theta(0) was once off by 2.7e-5
     (2.5, 0.0), (3.1, 1e-9), (0.3, 1.9), (-1.0, -2.7), (math.pi - 1e-9, 1e-7)])
 def test_initial_state_comes_back_exactly(theta0, dtheta0):
-    # Item 5: theta(0) and theta'(0) to 4 ulp of themselves (not of the motion's size).
+    # theta(0) and theta'(0) to 4 ulp of themselves (not of the motion's size).
     m = ep.solve(theta0, dtheta0)
     assert abs(m.theta(0.0) - theta0) <= 4 * math.ulp(theta0)
     assert abs(m.dtheta(0.0) - dtheta0) <= 4 * math.ulp(dtheta0) + 1e-15 * (dtheta0 == 0)
@@ -135,7 +135,7 @@ def test_initial_states_come_back_in_one_array_call():
 
 
 def test_clean_under_numpy_raise():
-    # Item 7: no floating-point exception escapes, whatever the caller's np.seterr.
+    # no floating-point exception escapes, whatever the caller's np.seterr.
     with np.errstate(all="raise"):
         states = ([0.0, math.pi, 3 * math.pi, 1e-300, 1e50, 2.0, 0.0, math.pi, 1.0, 0.1],
                   [0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 2.0, 1e-160, 1.0, 1e-200],
@@ -153,7 +153,7 @@ def test_clean_under_numpy_raise():
 
 
 def test_no_silent_infinity():
-    # Item 7: solve(1, 1e200) once gave energy_constant = inf; now a ValueError names dtheta0.
+    # solve(1, 1e200) once gave energy_constant = inf; now a ValueError names dtheta0.
     with pytest.raises(ValueError, match="dtheta0"):
         ep.solve(1.0, 1e200)
     m = ep.solve(1.0, 1.0, 1e-302)       # a free rotation: c1 is fine, beta is beyond doubles
@@ -164,7 +164,7 @@ def test_no_silent_infinity():
 
 
 def test_memory_of_theta_stays_near_its_result():
-    # Item 4: theta(t) peaks at <= 4 times its result (chunked evaluation).
+    # theta(t) peaks at <= 4 times its result (chunked evaluation).
     m = ep.solve(2.0, 0.3)
     t = np.linspace(0.0, 1e3, 2_000_000)
     tracemalloc.start()
@@ -194,7 +194,7 @@ def test_repr_and_html_summary():
 
 
 def test_scalar_calls_give_the_array_bits():
-    # Item 6 (and the fast path of one number, _scalar): one state at one time, and sn, cn,
+    # The fast path of one number (_engine/scalar.py): one state at one time, and sn, cn,
     # dn, am of one u and k, give the very bits of the array call.
     rng = np.random.default_rng(17)
     theta0, dtheta0, omega0 = random_states(300, rng, near_fraction=0.2)

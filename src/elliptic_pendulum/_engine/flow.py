@@ -6,7 +6,7 @@ output is filled a chunk at a time (about 2**15 values), so the temporaries of t
 evaluation stay a few megabytes however long t is, and theta and theta' come from one pass.
 
 Every operation is elementwise: an element's value does not depend on the other elements
-(the Landen constants are built so, see :func:`._landen.constants`).
+(the Landen constants are built so, see :func:`.landen.constants`).
 """
 
 from __future__ import annotations

@@ -1,7 +1,7 @@
 """One number in, one number out: the array kernels again, on Python floats.
 
 A NumPy call on a single number costs about a microsecond of dispatch, and the kernels of
-:mod:`._landen` and :mod:`._flow` make dozens of them. Here the same operations, in the same
+:mod:`.landen` and :mod:`.flow` make dozens of them. Here the same operations, in the same
 order, run on Python floats (whose +, -, *, / and sqrt are the same IEEE operations), and the
 transcendental functions are NumPy's own ufuncs, called once each: so a scalar call gives
 the very bits of the array call (the tests check it), several times faster.
@@ -47,7 +47,7 @@ def landen(kc: float, kc_lo: float) -> _landen.Constants:
 
 
 def evaluate(u, c, u_lo=0.0, amplitude=False, name="u", quarters=0.0):
-    """Mirror of :func:`._landen.evaluate` for one float (kc > 0)."""
+    """Mirror of :func:`.landen.evaluate` for one float (kc > 0)."""
     n = float(round(u / c.quarter))
     v = ((u - n * c.k_hi) - n * c.k_mid) + (u_lo - n * c.k_lo)
     n = n + quarters
@@ -160,8 +160,8 @@ def jacobi(u: float, k: float, amplitude: bool = False):
     return evaluate(u, landen(kc, kc_lo), amplitude=amplitude)
 
 
-# --- one initial state: mirrors of regimes._near, _landen._constants, regimes.phases and
-# _states._chunk, for a state in the usual range (else None: the array path decides) -------
+# --- one initial state: mirrors of classify._near, landen._constants, classify.phases and
+# states._chunk, for a state in the usual range (else None: the array path decides) -------
 
 _TWO_PI = (2 * PI_HI, 2 * PI_LO, 2 * PI_LO2)
 _TWO_PI_HI = split(_TWO_PI[0])
@@ -206,7 +206,7 @@ def _half_angle(th):
 @lru_cache(maxsize=256)
 def _agm(kc: float, kc_lo: float) -> _landen.Constants:
     a, b = 1.0, kc
-    done = a == b  # as in _landen._constants: one step past a, b within 1e-8
+    done = a == b  # as in landen._constants: one step past a, b within 1e-8
     mu, nu = [a], [a if done else b]
     while not done:
         done = abs(a - b) <= 1e-8 * a
@@ -282,7 +282,7 @@ def solve(th: float, v: float, w0: float):
 
 
 def _phase(s, c, w, k, kc, rot):
-    """Mirror of regimes.phases for one state of regime II or IV."""
+    """Mirror of classify.phases for one state of regime II or IV."""
     sgn_s = -1.0 if s < 0 else 1.0
     sgn_w = -1.0 if w < 0 else 1.0
     aw = abs(w)

@@ -3,7 +3,8 @@
 Every :class:`Erratum` pairs the statement as printed (an
 :class:`~elliptic_pendulum.checks.symbolic.Identity` whose check fails, when the printed text is an
 equation) with the corrected one (whose check holds).
-The book's page "Notes on the original" and ``tests/test_symbolic.py`` iterate over the same list.
+The book's page "Notes on the original" and ``tests/checks/test_symbolic.py`` iterate over
+the same list.
 Like :mod:`elliptic_pendulum.checks.symbolic`, this module imports sympy only.
 """
 

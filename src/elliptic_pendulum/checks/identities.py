@@ -4,8 +4,8 @@ Each :class:`.Identity` is displayed as it is checked: a left side that
 sympy would evaluate on construction (a derivative, a substitution, a sum) is kept unevaluated
 (``sp.Derivative``, ``sp.Subs``, ``evaluate=False``), so that no display reads "X = X". Each
 ``mutant`` is a wrong right-hand side, the slip a reader could make: a sign, a factor 2, a
-squared modulus, the wrong branch; ``tests/test_symbolic.py`` asserts that sympy rejects it and
-that it is far from the truth at random points of the domain.
+squared modulus, the wrong branch; ``tests/checks/test_symbolic.py`` asserts that sympy
+rejects it and that it is far from the truth at random points of the domain.
 
 Imports sympy and :mod:`elliptic_pendulum.checks.symbolic` only.
 """

@@ -12,8 +12,8 @@ argument, or with a named sympy statement of :mod:`elliptic_pendulum.checks.symb
   positional argument or ``mutant=``);
 - ``verify.fact("Lemma 2.3", ...)``: a *numerical fact*.
 
-``STATUS`` (kept in ``_claims.py``) lists, with a one-line justification each, the claims
-that are definitions or are proved in the text only. ``tests/test_registry.py`` asserts that
+``STATUS`` (kept in ``claims.py``) lists, with a one-line justification each, the claims
+that are definitions or are proved in the text only. ``tests/checks/test_registry.py`` asserts that
 every claim of ``CLAIMS`` has a check or a status, and that every check found carries a
 mutant where one is required.
 

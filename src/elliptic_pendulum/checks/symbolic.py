@@ -3,10 +3,10 @@ r"""The note's identities as sympy statements, each one checkable.
 Every statement is an :class:`Identity`: the note's location, a left and a right side to display
 (``sympy.latex``), and :meth:`Identity.check`, True iff ``sympy.simplify`` reduces the residual
 to 0.
-The book shows and checks a statement in one cell, and ``tests/test_symbolic.py`` checks the very
-same objects. :func:`.identities` lists the correct statements in the note's order, (1)-(46);
-:func:`.printed_errata` lists the places where the note prints something
-else, with the printed statement as an Identity whose check fails.
+The book shows and checks a statement in one cell, and ``tests/checks/test_symbolic.py``
+checks the very same objects. :func:`.identities` lists the correct statements in the
+note's order, (1)-(46); :func:`.printed_errata` lists the places where the note prints
+something else, with the printed statement as an Identity whose check fails.
 
 Some steps hold only on a domain, where the radicands are positive: -1 < z < 1, 0 < alpha < 1,
 -pi < theta < pi. There sympy cannot split sqrt(A B) into sqrt(A) sqrt(B) by itself; such statements

@@ -16,14 +16,8 @@ Between the two folds three orbits coexist: the upper and lower branches are sta
 one is a saddle (a Floquet multiplier outside the unit circle). A slow sweep of the frequency
 follows a stable branch to its fold and jumps to the other: :meth:`ResponseCurve.jumps`.
 
-Design note for the chapter: plot ``curve.frequency`` against ``curve.amplitude``, solid where
-``curve.stable`` and dashed elsewhere, with
-:func:`~elliptic_pendulum.driven.resonance.backbone_frequency` over it; the folds and the jumps are
-numbers to glue. Costs: about 40 ms of solve_ivp per orbit; F = 0.15, zeta = 0.05 over
-[0.4, 1.2] with step 0.12 takes ~4 s (41 orbits; linear interpolation between them is good to
-1e-2, shooting at a given frequency to 1e-10 against a long run); the lightly damped F = 0.015,
-zeta = 0.005 over [0.6, 1.1], step 0.05, ~8 s (107 orbits), with its peak 3e-5 from the exact
-backbone and 2.2e-3 from Duffing's, the contrast the chapter can glue.
+Each orbit costs about 40 ms of solve_ivp; linear interpolation between the orbits of a curve
+is good to about 1e-2, the shooting at a given frequency to 1e-10 against a long run.
 """
 
 from __future__ import annotations

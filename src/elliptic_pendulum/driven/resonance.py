@@ -20,11 +20,6 @@ For the chapter "toward nonlinear resonance" (beyond the note, which ends by poi
 
 The integration runs in the forcing phase :math:`\tau = \Omega t \in [0, 2\pi]`, so the
 sensitivity to :math:`\Omega` (which :mod:`.continuation` needs) comes out of the same run.
-
-Design note for the chapter: :func:`backbone_frequency` against :func:`duffing_backbone` is one
-figure; :func:`.response_curve` draws the response with its stable
-and unstable branches over it; the long-run check is :func:`~elliptic_pendulum.driven.sweep.settle`
-(an independent solve_ivp from rest), and :func:`~elliptic_pendulum.driven.sweep` shows the jumps.
 """
 
 from __future__ import annotations

@@ -13,9 +13,8 @@ lower branch and jumps up at the fold, down it stays on the upper one and jumps 
 
 This module shares no code with the shooting of :mod:`.resonance`: the right-hand side is written
 out again, and no Newton step or variational equation is involved, so agreement between the two is
-a check. Design note for the chapter: with :math:`\zeta = 0.05` some 80 periods suffice (the
-transient falls by :math:`e^{-25}`); the sweep's hysteresis loop over the response curve is one
-figure, and ``ResponseCurve.jumps()`` says where its two jumps must be.
+a check. With :math:`\zeta = 0.05` some 80 periods
+suffice (the transient falls by :math:`e^{-25}`).
 """
 
 from __future__ import annotations

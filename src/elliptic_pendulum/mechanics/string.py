@@ -23,13 +23,10 @@ which for a swing of amplitude :math:`\theta_0` is the note's :math:`T = mg(3\co
 Units: lengths in units of :math:`\ell` (pivot at the origin, y up, the bob at
 :math:`(\sin\theta, -\cos\theta)`), so :math:`g = \omega_0^2`; angles in radians.
 
-Design note for the chapter: :func:`string_stays_taut` shades the phase plane (it is vectorized);
-:func:`slack_point` and :func:`free_flight` take one initial state, and the flight's
-:meth:`FreeFlight.position` draws the parabola. What happens when the string snaps taut again
-(an inelastic jerk that removes the radial velocity, ``FreeFlight.radial_speed``) is a modelling
-choice left to the chapter. Independent references with natural mutants: solve_ivp with the
-tension as an event (agreement ~1e-10; mutant :math:`\cos\theta_s = \tfrac12\cos\theta_0`),
-a projectile integrated to :math:`|r| = \ell` (mutant flight time :math:`2 v_y/g`).
+:func:`string_stays_taut` is vectorized; :func:`slack_point` and :func:`free_flight` take one
+initial state, and the flight's :meth:`FreeFlight.position` traces the parabola. What happens when
+the string snaps taut again is a modelling choice left to the caller: an inelastic jerk removes
+the radial velocity, ``FreeFlight.radial_speed``.
 """
 
 from __future__ import annotations

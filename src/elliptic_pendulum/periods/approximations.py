@@ -15,11 +15,10 @@ series (2 or 4 terms)     :func:`.period_series`                                
 ``lima_arun_ratio``       :math:`-\log(a)/(1 - a)`, a = cos(A/2) (Lima, Arun)   :math:`A^4/3072`
 ========================  ====================================================  =================
 
-with :math:`k_c = \cos(A/2)`. Design note for the chapter: :func:`ratio_approximations` gives them
-all at once, keyed by a short label, for the table and the log-scale error plot from 1 to 179.999
-degrees; the references (Kidd and Fogg, Phys. Teach. 40, 81 (2002); Lima and Arun, Am. J. Phys.
-74, 892 (2006)) belong in the book's bibliography. Lima and Arun quote an error below 0.25%; we
-measure 0.2487% at 90 degrees, and it grows beyond (1% at 120 degrees).
+with :math:`k_c = \cos(A/2)`. :func:`ratio_approximations` gives them all
+at once, keyed by a short label. Kidd and Fogg (Phys. Teach. 40, 81 (2002)) and Lima and Arun
+(Am. J. Phys. 74, 892 (2006)); the latter quote an error below 0.25%, which is 0.2487% at 90
+degrees and grows beyond (1% at 120 degrees).
 """
 
 from __future__ import annotations

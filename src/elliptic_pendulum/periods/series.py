@@ -19,16 +19,6 @@ alpha) with :math:`k_c = \sqrt{1 - k^2}` passed alongside where k is close to 1.
 
   with t measured from a passage through the bottom with :math:`\theta' > 0`. For the motion
   ``ep.solve(theta0)`` (released from rest at t = 0) that passage is at t = 3T/4.
-
-Design note for the chapter: the coefficients are exact, so a table of them, their ratio test
-(:math:`\sqrt{n a_{n-1}/((n+1) a_n)} \to \pi`) and the error of the 2- and 4-term sums against
-:func:`.period_ratio` can all be glued; the overtones
-:math:`b_1/b_0, b_2/b_0` grow from :math:`q` (tiny) toward :math:`1/3, 1/5` (a square wave's) as
-:math:`\theta_0 \to \pi` (0.0015 and 4e-6 at 30 degrees, 0.20 and 0.057 at 179). Independent
-references with natural mutants: OEIS A223067/A223068 (mutant 11/3072 -> 9/1024, the
-:math:`m^2` term alone, as if :math:`m = \theta_0^2/4`); an FFT of ``ep.solve(theta0).theta``
-(agreement ~1e-15; mutant :math:`1 - q^{2j+1}` in the denominator); ``mpmath.qfrom`` (relative
-error <= 4.5e-16).
 """
 
 from __future__ import annotations

@@ -13,10 +13,7 @@ which a notebook shows with ``IPython.display.HTML`` and which Sphinx/myst-nb ke
 book. Nothing global is touched (no rcParams, no pyplot state beyond the figure it creates and,
 in :func:`animation_html`, closes).
 
-Design note for the chapter: one motion per regime, e.g. ``ep.solve(0.0)`` (rest),
-``ep.solve(2.0)`` (a swing), ``ep.solve(0.0, 2.0)`` (the separatrix) and ``ep.solve(0.0, 2.5)``
-(a rotation); 60 to 120 frames keep the page light (about 25 kB per frame). An interactive
-version with sliders needs ipywidgets, which is not a dependency of the package yet.
+Sixty to 120 frames keep a page light (about 25 kB per frame).
 """
 
 from __future__ import annotations
