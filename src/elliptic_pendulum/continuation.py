@@ -28,6 +28,7 @@ backbone and 2.2e-3 from Duffing's, the contrast the chapter can glue.
 
 from __future__ import annotations
 
+import operator
 from dataclasses import dataclass
 from typing import Any
 
@@ -37,6 +38,24 @@ from ._validation import positive_scalar, real_array, real_scalar
 from .resonance import PeriodicOrbit, _flow, _orbit, periodic_orbit
 
 __all__ = ["ResponseCurve", "response_curve"]
+
+
+def _count(value: Any, name: str, least: int) -> int:
+    """Return an integral ``value`` >= ``least`` as an int, or raise naming ``name``.
+
+    Any integral type is welcome (numpy's too: a count read from an array is an np.int64), but
+    not a bool or a float, which would be a mistake rather than a count.
+    """
+    if isinstance(value, (bool, np.bool_)):
+        raise TypeError(f"{name} must be an integer >= {least}, got a bool")
+    try:
+        number = operator.index(value)
+    except TypeError:
+        raise TypeError(f"{name} must be an integer >= {least}, "
+                        f"got {type(value).__name__}") from None
+    if number < least:
+        raise ValueError(f"{name} must be an integer >= {least}, got {number}")
+    return number
 
 
 @dataclass(frozen=True)
@@ -181,7 +200,8 @@ def response_curve(forcing: Any, damping: Any, omega0: Any = 1.0, *,
     Raises
     ------
     ValueError
-        For a parameter out of range. RuntimeError if the step collapses.
+        For a parameter out of range. RuntimeError if the step collapses. TypeError if
+        ``max_points`` is not an integer.
 
     Examples
     --------
@@ -205,8 +225,7 @@ def response_curve(forcing: Any, damping: Any, omega0: Any = 1.0, *,
         raise ValueError("frequencies must be a range (low, high) with 0 < low < high")
     step = positive_scalar(step, "step")
     tol = positive_scalar(tol, "tol")
-    if isinstance(max_points, bool) or not isinstance(max_points, int) or max_points < 2:
-        raise ValueError("max_points must be an integer >= 2")
+    max_points = _count(max_points, "max_points", 2)
     low, high = float(bounds[0]), float(bounds[1])
     first = periodic_orbit(low, forcing, damping, omega0, tol=tol)
     orbits = [first]
