@@ -61,3 +61,36 @@ def test_solve_blames_omega0_not_dtheta0_for_a_huge_omega0():
     assert "dtheta0 is too large" not in str(info.value)
     with pytest.raises(ValueError, match="dtheta0 is too large"):
         ep.solve(0.0, 1e200, 1.0)
+
+
+def _backbone_reference(speed=None, amplitude=None, omega0=1.0):
+    """omega = pi v / (2 K(2 omega0 / v)) or pi omega0 / (2 K(sin(A/2))), mpmath at 50 digits."""
+    import mpmath
+
+    ctx = mpmath.MPContext()
+    ctx.dps = 50
+    if speed is not None:
+        gamma = 2 * ctx.mpf(omega0) / ctx.mpf(speed)
+        return ctx.pi * ctx.mpf(speed) / (2 * ctx.ellipk(gamma**2))
+    return ctx.pi * ctx.mpf(omega0) / (2 * ctx.ellipk(ctx.sin(ctx.mpf(amplitude) / 2) ** 2))
+
+
+@pytest.mark.parametrize("speed, omega0", [(1e200, 1.0), (1.7e308, 1.0), (1e10, 1e-300),
+                                           (1e308, 1e307), (2 + 1e-12, 1.0), (3.0, 1.0)])
+def test_backbone_frequency_of_fast_rotations(speed, omega0):
+    # A rotation at 1e200 rad/s turns at about 1e200 rad/s: a double answer exists, and it
+    # was refused as "kc must be finite" ((v - 2)(v + 2) overflowed).
+    with np.errstate(all="raise"):
+        got = ep.backbone_frequency(bottom_speed=speed, omega0=omega0)
+    expected = _backbone_reference(speed=speed, omega0=omega0)
+    assert abs(got - float(expected)) <= 4e-16 * float(expected)
+
+
+def test_backbone_frequency_of_a_swing_at_tiny_omega0():
+    # omega0 / R is a double (9.4e-309) although the period 2 pi R / omega0 overflows; going
+    # through the period gave 0.0.
+    with np.errstate(all="raise"):
+        got = ep.backbone_frequency(1.0, omega0=1e-308)
+    expected = float(_backbone_reference(amplitude=1.0, omega0=1e-308))
+    # Subnormal: the spacing of doubles there is 4.9e-324, i.e. 5e-16 relative.
+    assert abs(got - expected) <= 4 * 5e-324

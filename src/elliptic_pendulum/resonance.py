@@ -38,7 +38,7 @@ from scipy import integrate, optimize
 
 from ._validation import positive_scalar, real_array, real_scalar, scalar_or_array
 from .elliptic import complete_integral
-from .period import period
+from .period import period_ratio
 
 __all__ = ["PeriodicOrbit", "backbone_frequency", "duffing_backbone", "periodic_orbit"]
 
@@ -91,17 +91,25 @@ def backbone_frequency(amplitude: Any = None, omega0: Any = 1.0, *,
         a = real_array(amplitude, "amplitude")
         if np.any((a < 0) | (a >= math.pi)):
             raise ValueError(f"amplitude must lie in [0, pi) (a swing); got {a.tolist()!r}")
-        return scalar_or_array(2 * math.pi / np.asarray(period(a, omega0)), a)
+        # omega0 / R, not 2 pi / period: the period overflows for omega0 below ~1e-308 while the
+        # frequency itself is a double (subnormal at worst, hence no underflow trap).
+        with np.errstate(under="ignore"):
+            return scalar_or_array(omega0 / np.asarray(period_ratio(a)), a)
     v = real_array(bottom_speed, "bottom_speed")
     if np.any(np.abs(v) <= 2 * omega0):
         raise ValueError("bottom_speed must exceed 2 * omega0 in size (a rotation); "
                          f"got {v.tolist()!r}")
     speed = np.abs(v)
-    # gamma = 2 w0 / v and its complement sqrt((v - 2 w0)(v + 2 w0)) / v, free of cancellation.
-    gamma = 2 * omega0 / speed
-    gamma_c = np.sqrt((speed - 2 * omega0) * (speed + 2 * omega0)) / speed
-    return scalar_or_array(math.pi * speed / (2 * np.asarray(complete_integral(gamma, kc=gamma_c))),
-                           v)
+    # gamma = 2 w0 / v and its complement sqrt((1 - gamma)(1 + gamma)), with 1 - gamma formed as
+    # (v - 2 w0) / v, free of cancellation; the quotients (not (v - 2 w0)(v + 2 w0)) keep every
+    # speed up to the largest double in range. A gamma that underflows is 0 to rounding: there
+    # the frequency is the speed itself.
+    with np.errstate(under="ignore"):
+        gamma = 2 * omega0 / speed
+        gamma_c = np.sqrt((speed - 2 * omega0) / speed * (1.0 + gamma))
+    # speed * (pi / 2K) rather than pi * speed / 2K: the latter overflows beyond 5.7e307.
+    turn = (0.5 * math.pi) / np.asarray(complete_integral(gamma, kc=gamma_c))
+    return scalar_or_array(speed * turn, v)
 
 
 def duffing_backbone(amplitude: Any, omega0: Any = 1.0) -> Any:
