@@ -94,3 +94,33 @@ def test_backbone_frequency_of_a_swing_at_tiny_omega0():
     expected = float(_backbone_reference(amplitude=1.0, omega0=1e-308))
     # Subnormal: the spacing of doubles there is 4.9e-324, i.e. 5e-16 relative.
     assert abs(got - expected) <= 4 * 5e-324
+
+
+# --- valid input, no spurious warning -----------------------------------------------------------
+
+def _silently(f, *args, **kwargs):
+    """Call f with every floating-point trap and every warning turned into an error."""
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with np.errstate(all="raise"):
+            return f(*args, **kwargs)
+
+
+@pytest.mark.parametrize("theta0, dtheta0, omega0", [(1.0, 1e200, 1.0), (0.0, 1.0, 1e-300),
+                                                     (3.0, -1e300, 1e-5), (2.0, 1e-200, 1.0),
+                                                     (1.0, 1e-200, 1e200)])
+def test_string_stays_taut_far_out(theta0, dtheta0, omega0):
+    # Expectation from the tension T/(m l) = c1 + 3 omega0^2 cos(theta) at the highest point of
+    # the motion (c1 = dtheta0^2 - 2 omega0^2 cos(theta0)), in exact mpmath arithmetic, which
+    # does not overflow: a rotation (c1 > 2 omega0^2) has its top at theta = pi, a swing its
+    # turning point where cos(theta) = -c1 / (2 omega0^2).
+    import mpmath
+
+    ctx = mpmath.MPContext()
+    ctx.dps = 60
+    w2 = ctx.mpf(omega0) ** 2
+    c1 = ctx.mpf(dtheta0) ** 2 - 2 * w2 * ctx.cos(ctx.mpf(theta0))
+    lowest = c1 - 3 * w2 if c1 > 2 * w2 else c1 + 3 * w2 * (-c1 / (2 * w2))
+    assert _silently(ep.string_stays_taut, theta0, dtheta0, omega0) is bool(lowest >= 0)
