@@ -124,3 +124,37 @@ def test_string_stays_taut_far_out(theta0, dtheta0, omega0):
     c1 = ctx.mpf(dtheta0) ** 2 - 2 * w2 * ctx.cos(ctx.mpf(theta0))
     lowest = c1 - 3 * w2 if c1 > 2 * w2 else c1 + 3 * w2 * (-c1 / (2 * w2))
     assert _silently(ep.string_stays_taut, theta0, dtheta0, omega0) is bool(lowest >= 0)
+
+
+def _period_reference(theta0, omega0):
+    """2 pi R / omega0 = 4 K(sin^2(theta0/2)) / omega0, mpmath at 50 digits."""
+    import mpmath
+
+    ctx = mpmath.MPContext()
+    ctx.dps = 50
+    return 4 * ctx.ellipk(ctx.sin(ctx.mpf(theta0) / 2) ** 2) / ctx.mpf(omega0)
+
+
+@pytest.mark.parametrize("name", ["period", "agm_period"])
+@pytest.mark.parametrize("omega0", [1e-308, 3e-308, 1e-320])
+def test_period_beyond_the_doubles_is_refused_naming_omega0(name, omega0):
+    # The true period is larger than the largest double (mpmath says so), so neither inf
+    # (period) nor an underflow warning (agm_period) is a right answer: a ValueError is.
+    assert _period_reference(1.0, omega0) > np.finfo(float).max
+    with pytest.raises(ValueError, match="omega0 must exceed"):
+        _silently(getattr(ep, name), 1.0, omega0)
+
+
+def test_small_angle_period_beyond_the_doubles_is_refused_naming_omega0():
+    # 2 pi / 1e-308 = 6.3e308 > 1.8e308.
+    with pytest.raises(ValueError, match="omega0 must exceed"):
+        _silently(ep.small_angle_period, 1e-308)
+
+
+@pytest.mark.parametrize("name", ["period", "agm_period"])
+def test_period_just_inside_the_doubles(name):
+    # 4e-308 leaves the period 1.67e308 representable: it must come out right (mpmath), and
+    # quietly.
+    got = _silently(getattr(ep, name), 1.0, 4e-308)
+    expected = float(_period_reference(1.0, 4e-308))
+    assert abs(got - expected) <= 4e-16 * expected
