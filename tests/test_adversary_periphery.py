@@ -158,3 +158,47 @@ def test_period_just_inside_the_doubles(name):
     got = _silently(getattr(ep, name), 1.0, 4e-308)
     expected = float(_period_reference(1.0, 4e-308))
     assert abs(got - expected) <= 4e-16 * expected
+
+
+# --- ResponseCurve.peak stays within the data -------------------------------------------------
+
+def test_peak_at_the_end_of_the_curve_is_the_end_orbit():
+    # Above resonance the amplitude falls along the whole range, so the largest orbit is the
+    # first (brute-force max over the data), and a long run from rest (settle, an independent
+    # solve_ivp) settles to the same swing there. A parabola through the first three orbits put
+    # its vertex at Omega = 1.568 with amplitude 0.086, smaller than the data's own maximum.
+    curve = ep.response_curve(0.1, 0.1, frequencies=(1.2, 1.6), step=0.05)
+    largest = int(np.argmax(curve.amplitude))
+    assert largest == 0
+    omega, amplitude = curve.peak()
+    assert (omega, amplitude) == (curve.frequency[0], curve.amplitude[0])
+    _, settled = ep.settle(1.2, 0.1, 0.1)
+    assert abs(amplitude - settled) < 1e-6
+
+
+@pytest.mark.parametrize("count", [1, 2])
+def test_peak_of_one_or_two_orbits(count):
+    # With fewer than three orbits there is no parabola: the peak is the largest orbit (the
+    # brute-force max), not a LinAlgError with a LAPACK message on stderr.
+    from elliptic_pendulum.continuation import ResponseCurve
+
+    orbits = tuple(ep.periodic_orbit(w, 0.1, 0.1) for w in (1.2, 1.25)[:count])
+    best = max(orbits, key=lambda o: o.amplitude)
+    assert _silently(ResponseCurve(orbits).peak) == (best.frequency, best.amplitude)
+
+
+def test_interior_peak_is_refined_between_its_neighbours():
+    # Below resonance and through it: the maximum is interior. Its refinement must stay between
+    # the neighbouring orbits, at least as high as the largest, and agree with a brute-force
+    # max over periodic orbits on a fine grid of frequencies around it (spacing 5e-4).
+    curve = ep.response_curve(0.1, 0.1, frequencies=(0.6, 1.0), step=0.05)
+    i = int(np.argmax(curve.amplitude))
+    assert 0 < i < len(curve.orbits) - 1
+    omega, amplitude = curve.peak()
+    around = curve.frequency[i - 1:i + 2]
+    assert around.min() <= omega <= around.max()
+    assert amplitude >= curve.amplitude[i]
+    grid = np.linspace(0.970, 0.977, 15)
+    fine = [ep.periodic_orbit(w, 0.1, 0.1).amplitude for w in grid]
+    assert abs(omega - grid[int(np.argmax(fine))]) < 1e-3
+    assert abs(amplitude - max(fine)) < 1e-5

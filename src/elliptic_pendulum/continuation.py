@@ -96,15 +96,28 @@ class ResponseCurve:
         x = np.array([o.state + (o.frequency,) for o in self.orbits[i - 1:i + 2]])
         s = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(x, axis=0), axis=1))])
         c = np.polyfit(s, values[i - 1:i + 2], 2)
-        vertex = -c[1] / (2 * c[0])
+        # values[i] is the extreme of the three, so the vertex lies between the neighbours; the
+        # clip keeps a flat or rounded-off parabola from reaching past them all the same.
+        vertex = float(np.clip(-c[1] / (2 * c[0]), s[0], s[2])) if c[0] != 0 else s[1]
         at = [float(np.polyval(np.polyfit(s, v[i - 1:i + 2], 2), vertex))
               for v in (self.frequency, self.amplitude)]
         return at[0], at[1], float(np.polyval(c, vertex))
 
     def peak(self) -> tuple[float, float]:
-        """Return (frequency, amplitude) of the largest amplitude, interpolated between orbits."""
-        omega, amplitude, _ = self._vertex(int(np.argmax(self.amplitude)), self.amplitude)
-        return omega, amplitude
+        """Return (frequency, amplitude) of the largest amplitude, interpolated between orbits.
+
+        An interior maximum is refined by the parabola through it and its two neighbours,
+        never beyond them. A maximum at an end of the curve (the peak lies outside the range of
+        frequencies) is that end orbit itself: there is nothing to interpolate toward, and a
+        parabola would extrapolate. So is the largest of one or two orbits.
+        """
+        amplitude = self.amplitude
+        i = int(np.argmax(amplitude))
+        if not 0 < i < len(self.orbits) - 1:
+            return float(self.frequency[i]), float(amplitude[i])
+        omega, top, _ = self._vertex(i, amplitude)
+        # The parabola through a maximum rises to at least the largest sample.
+        return omega, max(top, float(amplitude[i]))
 
     def folds(self) -> list[tuple[float, float]]:
         r"""Return the turning points (frequency, amplitude) where :math:`\Omega` reverses.
