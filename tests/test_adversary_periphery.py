@@ -202,3 +202,33 @@ def test_interior_peak_is_refined_between_its_neighbours():
     fine = [ep.periodic_orbit(w, 0.1, 0.1).amplitude for w in grid]
     assert abs(omega - grid[int(np.argmax(fine))]) < 1e-3
     assert abs(amplitude - max(fine)) < 1e-5
+
+
+# --- the command line: one line on stderr and status 2 for every bad argument ------------------
+
+def _cli_fails(capsys, *argv):
+    """Run the CLI in-process; docs/cli.md promises exit status 2, nothing on stdout and one
+    line on stderr for a bad argument. Returns that line."""
+    with pytest.raises(SystemExit) as info:
+        _silently(main, list(argv))
+    out, err = capsys.readouterr()
+    assert info.value.code == 2
+    assert out == ""
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and "error:" in lines[0]
+    return lines[0]
+
+
+def _cli_runs(capsys, *argv):
+    status = _silently(main, list(argv))
+    out, err = capsys.readouterr()
+    assert status == 0 and err == ""
+    return out.splitlines()
+
+
+@pytest.mark.parametrize("times", [("0", "1e300", "1e-300"), ("-1e308", "1e308", "1e307"),
+                                   ("0", "1", "1e-320"), ("0", "1e-10", "-1e-320")])
+def test_cli_times_that_overflow_fail_in_one_line(capsys, times):
+    # These raised OverflowError (math.floor of inf) or an overflow in step * k: a traceback
+    # and status 1.
+    _cli_fails(capsys, "solve", "--theta0", "170", "--t", *times)

@@ -112,12 +112,22 @@ def _omega0(parser: _Parser, args: argparse.Namespace) -> float | None:
 def _times(parser: _Parser, start: float, stop: float, step: float) -> np.ndarray:
     if not all(map(math.isfinite, (start, stop, step))):
         parser.error("--t START STOP STEP must be finite numbers")
-    if step == 0 or (stop - start) * step < 0:
+    # Signs, not the product (stop - start) * step, which can underflow to -0.0 or overflow.
+    if step == 0 or (stop != start and (stop > start) != (step > 0)):
         parser.error(f"--t: STEP must be nonzero and lead from START={start} to STOP={stop}")
-    count = math.floor((stop - start) / step * (1 + 1e-12)) + 1  # STOP itself when on the grid
-    if count > 10**7:
-        parser.error(f"--t would print {count} rows; use a larger STEP")
-    return start + step * np.arange(count)
+    # STOP - START overflows for -1e308 1e308, and the quotient for 0 1e300 1e-300: a float
+    # count that is inf (or beyond the cap) is refused before it meets math.floor.
+    rows = (stop - start) / step
+    if math.isinf(rows):
+        rows = stop / step - start / step
+    if not rows < 10**7:
+        parser.error(f"--t would print more than 10**7 rows ({rows:.3g}); use a larger STEP")
+    count = math.floor(rows * (1 + 1e-12)) + 1  # STOP itself when on the grid
+    with np.errstate(over="ignore"):
+        t = start + step * np.arange(count)
+        if not np.all(np.isfinite(t)):  # step * k overflowed on the way to a finite time
+            t = 2.0 * (0.5 * start + (0.5 * step) * np.arange(count))
+    return t
 
 
 def _table() -> None:
