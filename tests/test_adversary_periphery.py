@@ -232,3 +232,13 @@ def test_cli_times_that_overflow_fail_in_one_line(capsys, times):
     # These raised OverflowError (math.floor of inf) or an overflow in step * k: a traceback
     # and status 1.
     _cli_fails(capsys, "solve", "--theta0", "170", "--t", *times)
+
+
+@pytest.mark.parametrize("argv", [("crossing", "1", "1e-3"), ("crossing", "2", "3", "nan"),
+                                  ("period", "0", "170", "--omega0", "3.6e-308")])
+def test_cli_checks_every_value_before_printing_any(capsys, argv):
+    # The last value is refused by the library (R < 1; NaN; a period of 170 degrees beyond
+    # the doubles at this omega0, while that of 0 degrees, 2 pi / 3.6e-308, is not); the
+    # answers for the good ones used to be printed first, then the error.
+    line = _cli_fails(capsys, *argv)
+    assert "value" in line or "omega0" in line

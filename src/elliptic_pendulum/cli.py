@@ -18,7 +18,7 @@ import numpy as np
 
 from .mechanics import Pendulum
 from .motion import solve
-from .period import crossing_angle, period, period_ratio
+from .period import crossing_angle, period, period_ratio, small_angle_period
 
 __all__ = ["main"]
 
@@ -142,18 +142,23 @@ def _period(parser: _Parser, args: argparse.Namespace) -> None:
         if not 0 <= degrees < 180:
             parser.error(f"amplitude must be in degrees with 0 <= amplitude < 180, got {degrees}")
     omega0 = _omega0(parser, args)
+    lines = []  # all of them before any is printed: a refusal must not follow half an answer
     for degrees in args.amplitude:
         theta0 = math.radians(degrees)
         line = f"R({degrees:g} deg) = {period_ratio(theta0):.6f}"
         if omega0 is not None:
             line += (f"   period = {period(theta0, omega0):.6g} s"
-                     f"   small-angle period = {2 * math.pi / omega0:.6g} s")
-        print(line)
+                     f"   small-angle period = {small_angle_period(omega0):.6g} s")
+        lines.append(line)
+    print("\n".join(lines))
 
 
 def _crossing(args: argparse.Namespace) -> None:
-    for value in args.value:  # one at a time, so an error names the offending value
-        print(f"R = {value:g} at theta0 = {math.degrees(crossing_angle(value)):.9f} deg")
+    # One at a time, so an error names the offending value; all of them before anything is
+    # printed, so that a bad value after good ones ends with the error alone.
+    angles = [crossing_angle(value) for value in args.value]
+    for value, angle in zip(args.value, angles, strict=True):
+        print(f"R = {value:g} at theta0 = {math.degrees(angle):.9f} deg")
 
 
 def _solve(parser: _Parser, args: argparse.Namespace) -> None:
