@@ -242,3 +242,24 @@ def test_cli_checks_every_value_before_printing_any(capsys, argv):
     # answers for the good ones used to be printed first, then the error.
     line = _cli_fails(capsys, *argv)
     assert "value" in line or "omega0" in line
+
+
+@pytest.mark.parametrize("typed", ["179.9999", "179.99999999999997", "90", "1e-05", "0.1",
+                                   "33.333333333333336"])
+def test_cli_period_label_reads_back_as_the_amplitude(capsys, typed):
+    # The label must name the amplitude that was computed: read back, it is the same double
+    # ('{:g}' printed 179.9999 as "R(180 deg)", the one amplitude the command refuses).
+    import re
+
+    (line,) = _cli_runs(capsys, "period", typed)
+    label = re.fullmatch(r"R\((\S+) deg\) = \d+\.\d{6}", line).group(1)
+    assert float(label) == float(typed)
+
+
+@pytest.mark.parametrize("typed", ["3.0000000000000004", "2.123456789", "23.6"])
+def test_cli_crossing_label_reads_back_as_the_value(capsys, typed):
+    import re
+
+    (line,) = _cli_runs(capsys, "crossing", typed)
+    label = re.fullmatch(r"R = (\S+) at theta0 = \d+\.\d{9} deg", line).group(1)
+    assert float(label) == float(typed)

@@ -130,6 +130,16 @@ def _times(parser: _Parser, start: float, stop: float, step: float) -> np.ndarra
     return t
 
 
+def _number(x: float) -> str:
+    """``x`` as the user typed it, to every digit that tells it apart from its neighbours.
+
+    repr is the shortest string that reads back as the same double ('{:g}' printed 179.9999 as
+    180, the amplitude the program refuses); '90' rather than '90.0', and 0 for -0.
+    """
+    text = repr(float(x) + 0.0)
+    return text[:-2] if text.endswith(".0") else text
+
+
 def _table() -> None:
     print(f"{'theta0/deg':>10}  {'R(theta0)':>10}  {'note':>6}")
     ratios = np.asarray(period_ratio(np.radians(list(NOTE_TABLE))))
@@ -145,7 +155,7 @@ def _period(parser: _Parser, args: argparse.Namespace) -> None:
     lines = []  # all of them before any is printed: a refusal must not follow half an answer
     for degrees in args.amplitude:
         theta0 = math.radians(degrees)
-        line = f"R({degrees:g} deg) = {period_ratio(theta0):.6f}"
+        line = f"R({_number(degrees)} deg) = {period_ratio(theta0):.6f}"
         if omega0 is not None:
             line += (f"   period = {period(theta0, omega0):.6g} s"
                      f"   small-angle period = {small_angle_period(omega0):.6g} s")
@@ -158,7 +168,7 @@ def _crossing(args: argparse.Namespace) -> None:
     # printed, so that a bad value after good ones ends with the error alone.
     angles = [crossing_angle(value) for value in args.value]
     for value, angle in zip(args.value, angles, strict=True):
-        print(f"R = {value:g} at theta0 = {math.degrees(angle):.9f} deg")
+        print(f"R = {_number(value)} at theta0 = {math.degrees(angle):.9f} deg")
 
 
 def _solve(parser: _Parser, args: argparse.Namespace) -> None:
