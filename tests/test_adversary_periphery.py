@@ -263,3 +263,42 @@ def test_cli_crossing_label_reads_back_as_the_value(capsys, typed):
     (line,) = _cli_runs(capsys, "crossing", typed)
     label = re.fullmatch(r"R = (\S+) at theta0 = \d+\.\d{9} deg", line).group(1)
     assert float(label) == float(typed)
+
+
+def test_cli_degrees_are_converted_to_the_nearest_double():
+    # Reference: mpmath at 60 digits, rounded once to a double. math.radians rounds twice
+    # (pi / 180, then the product) and misses the nearest double for about one angle in nine,
+    # among them multiples of 180 degrees (3960 = 11 turns).
+    import random
+
+    import mpmath
+
+    from elliptic_pendulum import cli
+
+    ctx = mpmath.MPContext()
+    ctx.dps = 60
+    rng = random.Random(20240611)
+    angles = [180.0 * n for n in range(-50, 200)] + [rng.uniform(-1e4, 1e4) for _ in range(500)]
+    angles += [1e-320, 5e-324, 1e308, -1e308, 179.9999, 33.333333333333336]
+    for degrees in angles:
+        assert cli._radians(degrees) == float(ctx.mpf(degrees) * ctx.pi / 180), degrees
+    assert cli._radians(360.0) == 2 * math.pi  # 2 * (the double nearest pi) is exact
+
+
+@pytest.mark.parametrize("degrees", ["180", "540", "-180"])
+def test_cli_odd_multiples_of_180_degrees_are_the_top(capsys, degrees):
+    # Released at rest upside down: the separatrix (regime III), as docs/cli.md shows for 180.
+    lines = _cli_runs(capsys, "solve", "--theta0", degrees, "--t", "0", "1", "1")
+    assert lines[0] == "# regime III (separatrix), period infinite"
+
+
+@pytest.mark.xfail(strict=True, reason="the library classifies the double nearest 2 pi n as a "
+                   "swing of amplitude ~2e-16 rad; the fix in regimes/_states is on another "
+                   "branch")
+@pytest.mark.parametrize("degrees", ["360", "720", "1080", "-360"])
+def test_cli_even_multiples_of_180_degrees_are_the_bottom(capsys, degrees):
+    # Released at rest hanging straight down, as for 0 degrees: regime I (rest), whatever the
+    # number of turns the angle counts.
+    lines = _cli_runs(capsys, "solve", "--theta0", degrees, "--t", "0", "1", "1")
+    assert lines[0] == _cli_runs(capsys, "solve", "--theta0", "0", "--t", "0", "1", "1")[0]
+    assert lines[0].startswith("# regime I (rest)")
