@@ -302,3 +302,12 @@ def test_cli_even_multiples_of_180_degrees_are_the_bottom(capsys, degrees):
     lines = _cli_runs(capsys, "solve", "--theta0", degrees, "--t", "0", "1", "1")
     assert lines[0] == _cli_runs(capsys, "solve", "--theta0", "0", "--t", "0", "1", "1")[0]
     assert lines[0].startswith("# regime I (rest)")
+
+
+@pytest.mark.parametrize("name", ["period_ratio", "period", "agm_period"])
+@pytest.mark.parametrize("theta0", [1e-320, 5e-324, 3e-323])
+def test_periods_of_subnormal_amplitudes_are_quiet(name, theta0):
+    # R = 1 + theta0^2/16 + ... (DLMF 19.5.1) is 1 to rounding for theta0 < 1e-8; the
+    # underflow of theta0 / 2 on the way is no reason for a warning.
+    expected = 1.0 if name == "period_ratio" else 2 * math.pi
+    assert _silently(getattr(ep, name), theta0) == expected
