@@ -311,3 +311,22 @@ def test_periods_of_subnormal_amplitudes_are_quiet(name, theta0):
     # underflow of theta0 / 2 on the way is no reason for a warning.
     expected = 1.0 if name == "period_ratio" else 2 * math.pi
     assert _silently(getattr(ep, name), theta0) == expected
+
+
+def test_cli_swing_whose_period_overflows_is_not_called_infinite(capsys):
+    # At omega0 = 1e-320 the period 4 K(sin 15 deg) / omega0 (mpmath) is finite, 6.4e320, but
+    # beyond the doubles; "infinite" is what docs/cli.md reserves for the separatrix.
+    assert math.isfinite(float(_period_reference(math.radians(30), 1e-320) / 1e300))
+    lines = _cli_runs(capsys, "solve", "--theta0", "30", "--omega0", "1e-320", "--t", "0", "1", "1")
+    assert lines[0].startswith("# regime II (libration), period ")
+    assert "infinite" not in lines[0] and "largest double" in lines[0]
+
+
+@pytest.mark.parametrize("argv", [("--theta0", "1e-320"), ("--theta0", "30", "--dtheta0", "1e-320"),
+                                  ("--theta0", "30", "--length", "1", "--g", "1e-320"),
+                                  ("--theta0", "30", "--t", "1e-320", "1", "1")])
+def test_cli_tiny_angles_and_rates_print_quietly(capsys, argv):
+    # Subnormal angles or rates converted to degrees underflow; they print as 0.000000000
+    # (rounded to nine decimals) all the same, so no FloatingPointError under errstate(raise).
+    lines = _cli_runs(capsys, "solve", *argv)
+    assert lines[0].startswith("# regime")

@@ -200,7 +200,12 @@ def _solve(parser: _Parser, args: argparse.Namespace) -> None:
     kind = "time per revolution" if motion.regime.value == "IV" else "period"
     # Without --omega0 or --length, omega0 = 1: time is counted in units of sqrt(l/g).
     second = "s" if omega0 is not None else "sqrt(l/g)"
-    when = "infinite" if math.isinf(motion.period) else f"{motion.period:.10g} {second}"
+    if motion.regime.value == "III":
+        when = "infinite"
+    elif math.isinf(motion.period):  # a finite period beyond the doubles (omega0 ~ 1e-320)
+        when = f"beyond the largest double (> {sys.float_info.max:.2g} {second})"
+    else:
+        when = f"{motion.period:.10g} {second}"
     print(f"# regime {motion.regime.value} ({motion.regime.name.lower()}), {kind} {when}")
     rate = unit + "/" + ("s" if omega0 is not None else "unit")
     print(f"{'t':>12}  {'theta/' + unit:>16}  {'theta_dot/' + rate:>18}")
