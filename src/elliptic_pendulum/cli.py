@@ -139,7 +139,7 @@ _PI = Fraction("3.14159265358979323846264338327950288419716939937510582097494")
 
 
 def _radians(degrees: float) -> float:
-    """The double nearest ``degrees`` * pi / 180; NaN and infinities pass for the library to name."""
+    """Return the double nearest ``degrees`` * pi / 180; NaN and inf pass to the library."""
     if not math.isfinite(degrees):
         return degrees
     return float(Fraction(degrees) * _PI / 180)
