@@ -330,3 +330,55 @@ def test_cli_tiny_angles_and_rates_print_quietly(capsys, argv):
     # (rounded to nine decimals) all the same, so no FloatingPointError under errstate(raise).
     lines = _cli_runs(capsys, "solve", *argv)
     assert lines[0].startswith("# regime")
+
+
+# --- series: the Fourier coefficients of small swings ----------------------------------------
+
+def _fourier_reference(theta0, n):
+    """b_j = 8 q^(j+1/2) / ((2j+1)(1 + q^(2j+1))), q from mpmath.qfrom of m = sin^2(theta0/2).
+
+    The working precision grows with -log10(theta0), so that mpmath's own K(1 - m) keeps its
+    digits (at 50 digits qfrom returns 0 for theta0 = 1e-150)."""
+    import mpmath
+
+    ctx = mpmath.MPContext()
+    ctx.dps = 50 + 2 * max(0, int(-math.log10(theta0)))
+    k = ctx.sin(ctx.mpf(theta0) / 2)
+    q = ctx.qfrom(m=k * k)
+    return [8 * q ** (j + ctx.mpf(1) / 2) / ((2 * j + 1) * (1 + q ** (2 * j + 1)))
+            for j in range(n)]
+
+
+@pytest.mark.parametrize("theta0", [1e-150, 1e-50, 1e-10, 2e-8, 1e-8, 1e-7, 1e-6, 1e-4, 0.01,
+                                    0.5, 1.0, 2.0, 3.0, 3.14, math.nextafter(math.pi, 0)])
+def test_fourier_coefficients_against_mpmath(theta0):
+    # Small swings lost every digit: kc = cos(theta0/2) rounds to 1 below theta0 ~ 2e-8, and
+    # k was recomputed from it (b = [0, 0] at 1e-8; b0 off by 1.2e-2 at 1e-7, 4.4e-5 at 1e-6).
+    got = _silently(ep.fourier_coefficients, theta0, 4)
+    for j, (b, expected) in enumerate(zip(got, _fourier_reference(theta0, 4), strict=True)):
+        if expected >= np.finfo(float).tiny:
+            # b_j goes with sqrt(q)^(2j+1): 2j+1 times the relative error of sqrt(q).
+            assert abs(b - expected) <= (2 * j + 1) * 4 * 2.0**-52 * expected, (j, b)
+        else:  # below the normal doubles: 0 or the nearest subnormals
+            assert abs(b - expected) <= 4 * 2.0**-1074, (j, b)
+
+
+@pytest.mark.parametrize("theta0", [1e-8, 1e-6])
+def test_fourier_coefficients_of_small_swings_against_the_exact_motion(theta0):
+    # The closed form itself checked against the motion: theta(t) = 2 asin(k sn(omega0 t, k))
+    # from the upward passage through the bottom, so by quarter-wave symmetry
+    # b_j = (2/K) int_0^K 2 asin(k sn(u)) sin((2j+1) pi u / (2K)) du (mpmath quadrature).
+    import mpmath
+
+    ctx = mpmath.MPContext()
+    ctx.dps = 40
+    k = ctx.sin(ctx.mpf(theta0) / 2)
+    m = k * k
+    big = ctx.ellipk(m)
+    got = ep.fourier_coefficients(theta0, 2)
+    for j in range(2):
+        def integrand(u, j=j):
+            return 2 * ctx.asin(k * ctx.ellipfun("sn", u, m=m)) * ctx.sin(
+                (2 * j + 1) * ctx.pi * u / (2 * big))
+        expected = 2 / big * ctx.quad(integrand, [0, big])
+        assert abs(got[j] - expected) <= (2 * j + 1) * 4 * 2.0**-52 * expected

@@ -186,7 +186,16 @@ def _root_nome(k: Any, kc: Any) -> tuple[np.ndarray, np.ndarray]:
         if np.any((kc < 0) | (kc > 1)):
             raise ValueError("kc (the complementary modulus sqrt(1 - k**2)) must lie in [0, 1]")
         k = np.sqrt((1.0 - kc) * (1.0 + kc))
-    k, kc = np.broadcast_arrays(k, kc)
+    return _root_nome_pair(k, kc), k
+
+
+def _root_nome_pair(k: np.ndarray, kc: np.ndarray) -> np.ndarray:
+    r"""sqrt(q) from a modulus pair each known to full relative precision (already checked).
+
+    Neither is recomputed from the other: kc = cos(theta0/2) rounds to 1 for small swings and
+    k = sqrt(1 - kc^2) would then be 0 (the nome with it), so the caller passes both.
+    """
+    k, kc = np.broadcast_arrays(np.asarray(k, dtype=float), np.asarray(kc, dtype=float))
     # pi K'/K with K = K1(k), K' = K1(kc), each seeded with the other one's complement (two
     # AGMs): neither is formed as 1 - something, so q = exp(-pi K'/K) is accurate for small kc.
     big = np.asarray(complete_integral(k, kc=kc), dtype=float)
@@ -206,7 +215,7 @@ def _root_nome(k: Any, kc: Any) -> tuple[np.ndarray, np.ndarray]:
         scale = np.sqrt(2.0 * (1.0 + kcs)) * (1.0 + np.sqrt(kcs))
         eps4 = (ks / scale) ** 8  # e <= 0.017 here, so e^17 is below rounding
         root[small] = ks / scale * np.sqrt(1.0 + eps4 * (2.0 + eps4 * (15.0 + 150.0 * eps4)))
-    return root, k
+    return root
 
 
 def nome(k: Any, kc: Any = None) -> Any:
@@ -305,9 +314,14 @@ def fourier_coefficients(theta0: Any, n: int) -> Any:
     if np.any((theta0 < 0) | (theta0 >= math.pi)):
         raise ValueError("theta0 must be an amplitude in radians with 0 <= theta0 < pi; "
                          f"got {theta0.tolist()!r}")
-    half = 0.5 * theta0
-    root, _ = _root_nome(np.sin(half), np.cos(half))
     odd = 2.0 * np.arange(n) + 1.0
-    # q^(j + 1/2) as a power of sqrt(q): representable even where q itself would underflow.
-    power = root[..., None] ** odd
-    return 8.0 * power / (odd * (1.0 + power * power))
+    # Tiny amplitudes underflow on the way (theta0 / 2 when subnormal, the high powers of sqrt(q)
+    # always): those b_j are below the smallest double, and 0 is their value to rounding.
+    with np.errstate(under="ignore"):
+        half = 0.5 * theta0
+        # k = sin(theta0/2) and kc = cos(theta0/2) both as computed, each to full precision:
+        # recomputing k from kc (which rounds to 1 below theta0 ~ 2e-8) lost every digit of q.
+        root = _root_nome_pair(np.sin(half), np.cos(half))
+        # q^(j + 1/2) as a power of sqrt(q): representable even where q itself would underflow.
+        power = root[..., None] ** odd
+        return 8.0 * power / (odd * (1.0 + power * power))
