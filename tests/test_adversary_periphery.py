@@ -382,3 +382,19 @@ def test_fourier_coefficients_of_small_swings_against_the_exact_motion(theta0):
                 (2 * j + 1) * ctx.pi * u / (2 * big))
         expected = 2 / big * ctx.quad(integrand, [0, big])
         assert abs(got[j] - expected) <= (2 * j + 1) * 4 * 2.0**-52 * expected
+
+
+@pytest.mark.parametrize("k", [1e-100, 1e-160, 1e-300, 0.3])
+def test_nome_of_a_tiny_modulus_is_quiet(k):
+    # mpmath's qfrom at a precision that holds 1 - k^2; q ~ k^2/16 underflows below k ~ 1e-154,
+    # where 0 (or the nearest subnormal) is the right double.
+    import mpmath
+
+    ctx = mpmath.MPContext()
+    ctx.dps = 50 + 2 * int(-math.log10(k))
+    expected = ctx.qfrom(k=ctx.mpf(k))
+    got = _silently(ep.nome, k)
+    if expected >= np.finfo(float).tiny:
+        assert abs(got - expected) <= 4 * 2.0**-52 * expected
+    else:
+        assert abs(got - expected) <= 4 * 2.0**-1074
