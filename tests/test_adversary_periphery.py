@@ -398,3 +398,77 @@ def test_nome_of_a_tiny_modulus_is_quiet(k):
         assert abs(got - expected) <= 4 * 2.0**-52 * expected
     else:
         assert abs(got - expected) <= 4 * 2.0**-1074
+
+
+# --- series: the exact coefficients are computed once ------------------------------------------
+
+def _composed_coefficients(n):
+    """a_0..a_{n-1} from DLMF 19.5.1, (2/pi) K = sum_i binom(2i, i)^2 m^i / 16^i, with
+    m = sin^2(theta0/2) = (1 - cos theta0)/2 = sum_{r>=1} (-1)^(r+1) x^r / (2 (2r)!), x = theta0^2,
+    composed by exact truncated power-series arithmetic: independent of the recurrence."""
+    from fractions import Fraction
+
+    m = [Fraction(0)] + [Fraction((-1) ** (r + 1), 2 * math.factorial(2 * r)) for r in range(1, n)]
+    total = [Fraction(0)] * n
+    power = [Fraction(1)] + [Fraction(0)] * (n - 1)  # m^0
+    for i in range(n):  # m^i = O(x^i): terms i >= n do not reach x^(n-1)
+        c = Fraction(math.comb(2 * i, i) ** 2, 16**i)
+        total = [t + c * p for t, p in zip(total, power, strict=True)]
+        power = [sum(power[a] * m[d - a] for a in range(d + 1)) for d in range(n)]
+    return total
+
+
+def test_period_series_coefficients_match_the_composed_series():
+    a = ep.period_series_coefficients(40)
+    assert a == _composed_coefficients(40)
+    # A longer call continues the kept ones; a shorter one is their prefix.
+    longer = ep.period_series_coefficients(61)
+    assert longer[:40] == a and ep.period_series_coefficients(7) == a[:7]
+
+
+def test_period_series_coefficients_cache_is_not_the_callers_list():
+    # The coefficients are kept between calls; the list handed out must be a copy of them.
+    first = ep.period_series_coefficients(5)
+    first[1] = 99
+    first.append(0)
+    assert ep.period_series_coefficients(5) == _composed_coefficients(5)
+
+
+def test_period_series_coefficients_from_threads_agree():
+    from concurrent.futures import ThreadPoolExecutor
+
+    with ThreadPoolExecutor(4) as pool:
+        results = list(pool.map(ep.period_series_coefficients, [90, 70, 90, 80, 90, 85]))
+    reference = _composed_coefficients(30)
+    assert all(r[:30] == reference for r in results)
+    assert results[0] == results[2] == results[4]
+
+
+def test_period_series_with_many_terms_against_mpmath():
+    # 400 terms at 3 rad: the tail beyond is below 1e-17 (the terms shrink by (3/pi)^2 = 0.91
+    # each); the rest is the rounding of 400 Horner steps. Reference R = (2/pi) K(sin^2(1.5))
+    # from mpmath at 40 digits.
+    import mpmath
+
+    ctx = mpmath.MPContext()
+    ctx.dps = 40
+    expected = 2 / ctx.pi * ctx.ellipk(ctx.sin(ctx.mpf(1.5)) ** 2)
+    assert abs(ep.period_series(3.0, 400) - expected) < 1e-13
+
+
+def test_period_series_does_not_recompute_kept_coefficients(monkeypatch):
+    # The cost that grew like n^3 on every call (period_series(theta0, 400) took seconds each
+    # time): once computed, the coefficients are kept, so repeated and shorter calls build no
+    # binomial row at all. Checked by making that work impossible after a first call.
+    from elliptic_pendulum import series
+
+    expected = ep.period_series(0.5, 150)
+    coefficients = ep.period_series_coefficients(150)
+
+    def forbidden(n):
+        raise AssertionError("the exact coefficients were recomputed")
+
+    monkeypatch.setattr(series, "_binomials", forbidden)
+    assert ep.period_series(0.5, 150) == expected
+    assert ep.period_series_coefficients(150) == coefficients
+    assert ep.period_series_coefficients(120) == coefficients[:120]

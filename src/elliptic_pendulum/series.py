@@ -33,7 +33,9 @@ error <= 4.5e-16).
 
 from __future__ import annotations
 
+import functools
 import math
+import threading
 from fractions import Fraction
 from typing import Any
 
@@ -80,7 +82,10 @@ def period_series_coefficients(n: int) -> list[Fraction]:
 
     Notes
     -----
-    Exact integer arithmetic. With :math:`m = \sin^2(\theta_0/2)`,
+    Exact integer arithmetic, by a recurrence (below) that gives all n coefficients in
+    :math:`O(n^2)` big-integer operations; they are kept, so a second call costs nothing and a
+    longer one only continues from where the last stopped. The closed form they agree with:
+    with :math:`m = \sin^2(\theta_0/2)`,
     :math:`(2/\pi)K_1 = \sum_i c_i m^i`, :math:`c_i = \binom{2i}{i}^2/16^i` (DLMF 19.5.1), and the
     power of a sine as cosines of multiples,
 
@@ -90,8 +95,15 @@ def period_series_coefficients(n: int) -> list[Fraction]:
     the coefficient of :math:`\theta_0^{2n}` (n >= 1) is the finite sum
     :math:`a_n = \frac{2(-1)^n}{(2n)!}\sum_{r \ge 1}(-1)^r r^{2n}\sum_{i \ge r}
     \frac{c_i}{4^i}\binom{2i}{i-r}`, where i may run to any bound :math:`\ge n` (the terms with
-    i > n cancel: :math:`m^i = O(\theta_0^{2i})`). Scaled by a power of 64 it is a sum of
-    integers: :math:`O(n^2)` big-integer operations. Radius of convergence :math:`\pi` (in
+    i > n cancel: :math:`m^i = O(\theta_0^{2i})`). The recurrence: Legendre's equation for
+    :math:`K` in m becomes, in :math:`\theta_0`,
+    :math:`(\sin\theta_0\,R')' = \tfrac14\sin\theta_0\,R`; with
+    :math:`E_j = 64^j (2j)!\,a_j` (integers) and :math:`\sigma = (-1)^{N-j}`,
+
+    .. math:: 8(N+1)(2N+3)\,E_{N+1} = \sum_{j=0}^{N} \sigma\,64^{N+1-j}\,E_j
+              \left[(2N+3)\binom{2N+1}{2j} + 8j\binom{2N+3}{2j}\right].
+
+    Radius of convergence :math:`\pi` (in
     :math:`\theta_0`): the nearest singularities are the separatrix amplitudes :math:`\pm\pi`,
     where :math:`m = 1`.
 
@@ -113,18 +125,52 @@ def period_series_coefficients(n: int) -> list[Fraction]:
     >>> round(59 * math.pi**118 * float(a[59]) * math.pi / 2, 2)
     1.0
     """
-    n = _count(n, "n")
-    top = n - 1  # the bound M >= n - 1 of the sum over i
-    # W_r = sum_{i=r}^{M} binom(2i, i)^2 64^(M - i) binom(2i, i - r): c_i / 4^i = binom^2 / 64^i,
-    # scaled by 64^M to integers. It does not depend on n, so each a_n costs O(n).
-    weights = [sum(math.comb(2 * i, i) ** 2 * 64 ** (top - i) * math.comb(2 * i, i - r)
-                   for i in range(r, top + 1)) for r in range(top + 1)]
-    coefficients = [Fraction(1)]
-    for order in range(1, n):
-        total = sum((-1) ** r * r ** (2 * order) * weights[r] for r in range(1, top + 1))
-        coefficients.append(Fraction(2 * (-1) ** order * total,
-                                     math.factorial(2 * order) * 64**top))
-    return coefficients
+    # A new list each time: the cached tuple behind it must not be changed by the caller.
+    return list(_coefficients(_count(n, "n")))
+
+
+# E_j = 64^j (2j)! a_j, grown on demand by the recurrence of period_series_coefficients and
+# kept: the coefficients are exact, so they never change. Recomputing them on every call made
+# period_series(theta0, 400) take seconds each time.
+_SCALED = [1]
+_SCALED_LOCK = threading.Lock()
+
+
+def _binomials(n: int) -> list[int]:
+    """Return the row binom(n, 0..n), each from the last (the row costs what one comb does)."""
+    row = [1]
+    for k in range(n):
+        row.append(row[-1] * (n - k) // (k + 1))
+    return row
+
+
+def _scaled(n: int) -> list[int]:
+    """Return [E_0, ..., E_{n-1}], continuing the recurrence from the ones already known."""
+    with _SCALED_LOCK:
+        for order in range(len(_SCALED) - 1, n - 1):  # computes E_{order + 1}
+            inner, outer = _binomials(2 * order + 1), _binomials(2 * order + 3)
+            total = 0
+            for j, e in enumerate(_SCALED):
+                term = e * ((2 * order + 3) * inner[2 * j]
+                            + 8 * j * outer[2 * j]) << 6 * (order + 1 - j)
+                total += term if (order - j) % 2 == 0 else -term
+            quotient, remainder = divmod(total, 8 * (order + 1) * (2 * order + 3))
+            assert remainder == 0  # E_{N+1} is an integer: 64^n (2n)! a_n is one
+            _SCALED.append(quotient)
+        return _SCALED[:n]
+
+
+@functools.lru_cache(maxsize=16)
+def _coefficients(n: int) -> tuple[Fraction, ...]:
+    """Return a_0, ..., a_{n-1} as an immutable tuple of exact fractions."""
+    return tuple(Fraction(e, 64**j * math.factorial(2 * j)) for j, e in enumerate(_scaled(n)))
+
+
+@functools.lru_cache(maxsize=16)
+def _float_coefficients(n: int) -> tuple[float, ...]:
+    """Return a_0, ..., a_{n-1} rounded to doubles, for summing the series."""
+    # int / int is correctly rounded, as float(Fraction) is, without reducing the fraction.
+    return tuple(e / (64**j * math.factorial(2 * j)) for j, e in enumerate(_scaled(n)))
 
 
 def period_series(theta0: Any, terms: int) -> Any:
@@ -168,8 +214,8 @@ def period_series(theta0: Any, terms: int) -> Any:
                          f"there); got {theta0.tolist()!r}")
     x = theta0 * theta0
     total = np.zeros_like(x)
-    for coefficient in reversed(period_series_coefficients(terms)):
-        total = total * x + float(coefficient)
+    for coefficient in reversed(_float_coefficients(terms)):
+        total = total * x + coefficient
     return scalar_or_array(total, theta0)
 
 
