@@ -485,3 +485,60 @@ def test_periodic_orbit_and_response_curve_are_quiet_under_errstate_raise():
     assert abs(orbit.amplitude / linear - 1) < 1e-6
     curve = _silently(ep.response_curve, 0.1, 0.1, frequencies=(1.2, 1.3), step=0.05)
     assert len(curve.orbits) >= 2
+
+
+def _independent_period_map(frequency, forcing, damping, state):
+    """One forcing period of theta'' + 2 zeta theta' + sin(theta) = F cos(Omega t) (omega0 = 1),
+    by scipy's Radau on the plain 2-D system at rtol 1e-13: none of the library's code."""
+    from scipy import integrate
+
+    def field(t, y):
+        return [y[1], forcing * math.cos(frequency * t) - 2 * damping * y[1] - math.sin(y[0])]
+
+    def jacobian(t, y):
+        return [[0.0, 1.0], [-math.cos(y[0]), -2 * damping]]
+
+    return integrate.solve_ivp(field, (0.0, 2 * math.pi / frequency), list(state),
+                               method="Radau", jac=jacobian, rtol=1e-13, atol=1e-22,
+                               dense_output=True)
+
+
+@pytest.mark.parametrize("damping", [100.0, 1000.0])
+def test_periodic_orbit_under_heavy_damping_against_an_independent_integration(damping):
+    orbit = ep.periodic_orbit(0.8, 0.2, damping)
+    run = _independent_period_map(0.8, 0.2, damping, orbit.state)
+    swing = orbit.amplitude
+    # Periodic: back where it started after one period, to far below the shooting's 1e-10.
+    assert np.max(np.abs(run.y[:, -1] - orbit.state)) < 1e-11 * swing
+    # The amplitude: half of max - min over the period, brute force over 20001 samples.
+    theta = run.sol(np.linspace(0.0, 2 * math.pi / 0.8, 20001))[0]
+    assert abs(swing - 0.5 * (theta.max() - theta.min())) < 1e-8 * swing
+    # The slow Floquet multiplier (the other is ~exp(-2 zeta 2 pi / Omega), 0 in doubles):
+    # the largest eigenvalue of the monodromy by central differences of the independent map.
+    h = 1e-4 * swing
+    columns = []
+    for e in np.eye(2):
+        plus = _independent_period_map(0.8, 0.2, damping, orbit.state + h * e).y[:, -1]
+        minus = _independent_period_map(0.8, 0.2, damping, orbit.state - h * e).y[:, -1]
+        columns.append((plus - minus) / (2 * h))
+    expected = np.max(np.abs(np.linalg.eigvals(np.column_stack(columns))))
+    assert abs(np.max(np.abs(orbit.multipliers)) - expected) < 1e-7
+
+
+def test_periodic_orbit_cost_does_not_grow_with_the_damping(monkeypatch):
+    # The explicit integrator's steps are bounded by stability to ~1/(2 zeta omega0 / Omega):
+    # at zeta = 1000 one period took ~1e5 evaluations of the field. Counted here (not timed):
+    # each period must take fewer than 1e4, as at light damping.
+    from elliptic_pendulum import resonance
+
+    counts = []
+    real = resonance.integrate.solve_ivp
+
+    def counting(*args, **kwargs):
+        sol = real(*args, **kwargs)
+        counts.append(sol.nfev)
+        return sol
+
+    monkeypatch.setattr(resonance.integrate, "solve_ivp", counting)
+    ep.periodic_orbit(0.8, 0.2, 1000.0)
+    assert counts and max(counts) < 10_000
