@@ -14,7 +14,6 @@ import elliptic_pendulum as ep
 from elliptic_pendulum.animation import animate
 from elliptic_pendulum.cli import main
 
-
 # --- counts: any integral type, bools and floats refused by name -----------------------------
 
 def test_response_curve_accepts_numpy_integer_max_points():

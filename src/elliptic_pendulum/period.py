@@ -168,7 +168,7 @@ def small_angle_period(omega0: float) -> float:
     2.0064
     """
     omega0 = positive_scalar(omega0, "omega0")
-    return float(_finite_period(np.float64(2 * math.pi / omega0), np.float64(1.0), omega0))
+    return float(_finite_period(np.asarray(2 * math.pi / omega0), np.asarray(1.0), omega0))
 
 
 def period(theta0: npt.ArrayLike, omega0: float = 1.0) -> FloatOrArray:
