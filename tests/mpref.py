@@ -75,3 +75,9 @@ def jacobi(us, m, dps: int = 40):
         out = np.array([[float(mpmath.re(mpmath.ellipfun(f, mpmath.mpf(float(u)), m=m)))
                          for f in ("sn", "cn", "dn")] for u in us])
     return out[:, 0], out[:, 1], out[:, 2]
+
+
+def period(theta0, omega0, dps: int = 50):
+    """The period (26), 4 K(sin^2(theta0/2)) / omega0, as an mpf (it may exceed any double)."""
+    with mpmath.workdps(dps):
+        return 4 * mpmath.ellipk(mpmath.sin(mpmath.mpf(theta0) / 2) ** 2) / mpmath.mpf(omega0)

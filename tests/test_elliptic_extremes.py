@@ -5,12 +5,11 @@ process-wide mpmath.mp) at 40 to 60 digits. mpmath takes the parameter m = k**2,
 exactly from the double k.
 """
 
-# Each lambda below is called at once, inside its loop (by _quiet): the late binding B023
+# Each lambda below is called at once, inside its loop (by quietly): the late binding B023
 # warns of cannot happen.
 # ruff: noqa: B023
 
 import math
-import warnings
 from fractions import Fraction
 
 import mpmath
@@ -19,6 +18,7 @@ import pytest
 
 import elliptic_pendulum as ep
 from elliptic_pendulum._engine import dd as _dd
+from tests.strict import quietly
 
 
 def _context(dps):
@@ -47,13 +47,6 @@ def _random_dd(rng, spread=30):
 
 # --- no spurious floating-point warnings at the edges --------------------------
 
-def _quiet(call):
-    """Run call() with every floating-point event an error and every warning an error."""
-    with np.errstate(all="raise"), warnings.catch_warnings():
-        warnings.simplefilter("error")
-        return call()
-
-
 EDGE_K = [0.0, -0.0, 1.0, -1.0, 5e-324, 1e-300, 1e-170, 1e-9, 0.5, 1 - 2.0 ** -53]
 EDGE_KC = [0.0, 5e-324, 1e-300, 1e-170, 1e-9, 0.5, 1.0]
 EDGE_Z = [0.0, -0.0, 5e-324, 1e-300, 0.5, -1.0, 1.0]
@@ -63,21 +56,21 @@ EDGE_U = [0.0, -0.0, 5e-324, 1e-300, 1.0, 700.0, 1e4, 1e7]
 def test_integrals_are_silent_at_the_edges():
     # E1(0, 1) was 0 * K1 = 0 * inf (invalid), E1(1e-300, k) squared kc z (underflow).
     for k in EDGE_K:
-        _quiet(lambda: ep.complete_integral(k))
+        quietly(lambda: ep.complete_integral(k))
         for z in EDGE_Z:
-            _quiet(lambda: ep.incomplete_integral(z, k))
-            _quiet(lambda: ep.incomplete_integral(np.array([z, 0.3]), k))
+            quietly(lambda: ep.incomplete_integral(z, k))
+            quietly(lambda: ep.incomplete_integral(np.array([z, 0.3]), k))
     for kc in EDGE_KC:
-        _quiet(lambda: ep.complete_integral(1.0, kc=kc))
+        quietly(lambda: ep.complete_integral(1.0, kc=kc))
         for z in EDGE_Z:
-            _quiet(lambda: ep.incomplete_integral(z, 1.0, kc=kc))
+            quietly(lambda: ep.incomplete_integral(z, 1.0, kc=kc))
         for u in (0.0, -0.0, 1e-300, 0.5):
-            _quiet(lambda: ep.inverse_integral(u, 1.0, kc=kc))
+            quietly(lambda: ep.inverse_integral(u, 1.0, kc=kc))
     # the values there: E1(+-0, k) = +-0 (an odd function), E1(z, 0) = asin z (DLMF 19.6.8)
     for k in (1.0, 0.5):
-        assert math.copysign(1.0, _quiet(lambda: ep.incomplete_integral(0.0, k))) == 1.0
-        assert math.copysign(1.0, _quiet(lambda: ep.incomplete_integral(-0.0, k))) == -1.0
-    assert _quiet(lambda: ep.incomplete_integral(1e-300, 0.5)) == 1e-300
+        assert math.copysign(1.0, quietly(lambda: ep.incomplete_integral(0.0, k))) == 1.0
+        assert math.copysign(1.0, quietly(lambda: ep.incomplete_integral(-0.0, k))) == -1.0
+    assert quietly(lambda: ep.incomplete_integral(1e-300, 0.5)) == 1e-300
     assert ep.incomplete_integral(1.0, 1.0, kc=0.0) == math.inf
 
 
@@ -85,13 +78,13 @@ def test_jacobi_functions_are_silent_at_the_edges():
     # am(5e-324, 0.5) took the scalar path's arctan2 of a subnormal (underflow).
     for u in EDGE_U:
         for k in EDGE_K:
-            _quiet(lambda: (ep.jacobi(u, k), ep.am(u, k), ep.sn(np.array([u, 0.3]), k),
+            quietly(lambda: (ep.jacobi(u, k), ep.am(u, k), ep.sn(np.array([u, 0.3]), k),
                             ep.am(np.array([u, 0.3]), k)))
         for kc in EDGE_KC:
-            _quiet(lambda: (ep.jacobi(u, 1.0, kc=kc), ep.am(u, 1.0, kc=kc),
+            quietly(lambda: (ep.jacobi(u, 1.0, kc=kc), ep.am(u, 1.0, kc=kc),
                             ep.am(np.array([u, 0.3]), 1.0, kc=np.array([kc, 0.8]))))
     # am(u) = u (1 + O(u^2)) at a subnormal u, and the scalar path gives the array's bits
-    assert _quiet(lambda: ep.am(5e-324, 0.5)) == 5e-324 == ep.am(np.array([5e-324]), 0.5)[0]
+    assert quietly(lambda: ep.am(5e-324, 0.5)) == 5e-324 == ep.am(np.array([5e-324]), 0.5)[0]
 
 
 # --- return types follow scalar_or_array (float only if every input is scalar) --
@@ -193,10 +186,10 @@ def test_huge_modulus_example():
     # sn(1e-155, 1e155) raised "AGM did not converge" ((k - 1)(k + 1) overflowed). DLMF 22.17:
     # sn(u, k) = sn(k u, 1/k) / k = sn(1, 1e-155) / 1e155 = sin(1) / 1e155 to 1e-310.
     exact = float(MP60.sin(1) / MP60.mpf(1e155))
-    assert _quiet(lambda: ep.sn(1e-155, 1e155)) == exact
-    assert _quiet(lambda: ep.cn(1e-155, 1e155)) == 1.0  # dn(1, 1e-155) = 1 - 3.5e-311
+    assert quietly(lambda: ep.sn(1e-155, 1e155)) == exact
+    assert quietly(lambda: ep.cn(1e-155, 1e155)) == 1.0  # dn(1, 1e-155) = 1 - 3.5e-311
     # dn = cn(1, 1e-155) = cos(1) - 1e-310: the recurrence's 1/hypot(1, tan 1) is an ulp off
-    assert _ulps(_quiet(lambda: ep.dn(1e-155, 1e155)), float(MP60.cos(1))) <= 1
+    assert _ulps(quietly(lambda: ep.dn(1e-155, 1e155)), float(MP60.cos(1))) <= 1
 
 
 def test_huge_modulus_matches_mpmath():
@@ -205,8 +198,8 @@ def test_huge_modulus_matches_mpmath():
     rng = np.random.default_rng(104)
     k = 10.0 ** rng.uniform(0.3, 308.2, 150)
     u = rng.choice([-1.0, 1.0], 150) * 10.0 ** rng.uniform(-5, 7.9, 150) / k
-    s, c, d = _quiet(lambda: ep.jacobi(u, k))
-    a = _quiet(lambda: ep.am(u, k))
+    s, c, d = quietly(lambda: ep.jacobi(u, k))
+    a = quietly(lambda: ep.am(u, k))
     ctx = _context(50)
     for i in range(k.size):
         exact = _mp_jacobi(u[i], k[i])
@@ -225,7 +218,7 @@ def test_huge_modulus_matches_mpmath():
 def test_huge_modulus_does_not_poison_an_array():
     u = np.array([1e-155, 0.3, 1e-299, -2.0, 5e-324])
     k = np.array([1e155, 0.5, 1e300, 1.0, 1.7e308])
-    s, c, d = _quiet(lambda: ep.jacobi(u, k))
+    s, c, d = quietly(lambda: ep.jacobi(u, k))
     for i in range(u.size):
         assert ep.jacobi(float(u[i]), float(k[i])) == (s[i], c[i], d[i])
     # DLMF 22.17.2 in 60 digits; sin(k u) / k rounds twice (1/k^2 underflows: sn = sin here)

@@ -13,12 +13,13 @@ import os
 import re
 import sys
 from collections.abc import Sequence
+from fractions import Fraction
 
 import numpy as np
 
 from .mechanics.rod import Pendulum
 from .motion import solve
-from .periods.period import crossing_angle, period, period_ratio
+from .periods.period import crossing_angle, period, period_ratio, small_angle_period
 
 __all__ = ["main"]
 
@@ -112,12 +113,46 @@ def _omega0(parser: _Parser, args: argparse.Namespace) -> float | None:
 def _times(parser: _Parser, start: float, stop: float, step: float) -> np.ndarray:
     if not all(map(math.isfinite, (start, stop, step))):
         parser.error("--t START STOP STEP must be finite numbers")
-    if step == 0 or (stop - start) * step < 0:
+    # Signs, not the product (stop - start) * step, which can underflow to -0.0 or overflow.
+    if step == 0 or (stop != start and (stop > start) != (step > 0)):
         parser.error(f"--t: STEP must be nonzero and lead from START={start} to STOP={stop}")
-    count = math.floor((stop - start) / step * (1 + 1e-12)) + 1  # STOP itself when on the grid
-    if count > 10**7:
-        parser.error(f"--t would print {count} rows; use a larger STEP")
-    return start + step * np.arange(count)
+    # STOP - START overflows for -1e308 1e308, and the quotient for 0 1e300 1e-300: a float
+    # count that is inf (or beyond the cap) is refused before it meets math.floor.
+    rows = (stop - start) / step
+    if math.isinf(rows):
+        rows = stop / step - start / step
+    if not rows < 10**7:
+        parser.error(f"--t would print more than 10**7 rows ({rows:.3g}); use a larger STEP")
+    count = math.floor(rows * (1 + 1e-12)) + 1  # STOP itself when on the grid
+    with np.errstate(over="ignore"):
+        t = start + step * np.arange(count)
+        if not np.all(np.isfinite(t)):  # step * k overflowed on the way to a finite time
+            t = 2.0 * (0.5 * start + (0.5 * step) * np.arange(count))
+    return t
+
+
+# pi to 60 digits as an exact fraction. d pi / 180 is then rounded once (a Fraction converts to
+# the nearest double), so that 360 degrees is the double nearest 2 pi (the bottom, like 0) and
+# 180 n degrees the double nearest n pi for every n; math.radians rounds twice and misses the
+# nearest double for about one angle in nine.
+_PI = Fraction("3.14159265358979323846264338327950288419716939937510582097494")
+
+
+def _radians(degrees: float) -> float:
+    """Return the double nearest ``degrees`` * pi / 180; NaN and inf pass to the library."""
+    if not math.isfinite(degrees):
+        return degrees
+    return float(Fraction(degrees) * _PI / 180)
+
+
+def _number(x: float) -> str:
+    """``x`` as the user typed it, to every digit that tells it apart from its neighbours.
+
+    repr is the shortest string that reads back as the same double ('{:g}' printed 179.9999 as
+    180, the amplitude the program refuses); '90' rather than '90.0', and 0 for -0.
+    """
+    text = repr(float(x) + 0.0)
+    return text[:-2] if text.endswith(".0") else text
 
 
 def _table() -> None:
@@ -132,34 +167,45 @@ def _period(parser: _Parser, args: argparse.Namespace) -> None:
         if not 0 <= degrees < 180:
             parser.error(f"amplitude must be in degrees with 0 <= amplitude < 180, got {degrees}")
     omega0 = _omega0(parser, args)
+    lines = []  # all of them before any is printed: a refusal must not follow half an answer
     for degrees in args.amplitude:
-        theta0 = math.radians(degrees)
-        line = f"R({degrees:g} deg) = {period_ratio(theta0):.6f}"
+        theta0 = _radians(degrees)
+        line = f"R({_number(degrees)} deg) = {period_ratio(theta0):.6f}"
         if omega0 is not None:
             line += (f"   period = {period(theta0, omega0):.6g} s"
-                     f"   small-angle period = {2 * math.pi / omega0:.6g} s")
-        print(line)
+                     f"   small-angle period = {small_angle_period(omega0):.6g} s")
+        lines.append(line)
+    print("\n".join(lines))
 
 
 def _crossing(args: argparse.Namespace) -> None:
-    for value in args.value:  # one at a time, so an error names the offending value
-        print(f"R = {value:g} at theta0 = {math.degrees(crossing_angle(value)):.9f} deg")
+    # One at a time, so an error names the offending value; all of them before anything is
+    # printed, so that a bad value after good ones ends with the error alone.
+    angles = [crossing_angle(value) for value in args.value]
+    for value, angle in zip(args.value, angles, strict=True):
+        print(f"R = {_number(value)} at theta0 = {math.degrees(angle):.9f} deg")
 
 
 def _solve(parser: _Parser, args: argparse.Namespace) -> None:
     omega0 = _omega0(parser, args)
     t = _times(parser, *args.t)
-    convert = (lambda x: x) if args.rad else math.radians
+    convert = (lambda x: x) if args.rad else _radians
     motion = solve(convert(args.theta0), convert(args.dtheta0),
                    omega0=1.0 if omega0 is None else omega0)
     theta, dtheta = motion.theta(t), motion.dtheta(t)
     if not args.rad:
-        theta, dtheta = np.degrees(theta), np.degrees(dtheta)
+        with np.errstate(under="ignore"):  # a subnormal angle prints as 0 all the same
+            theta, dtheta = np.degrees(theta), np.degrees(dtheta)
     unit = "rad" if args.rad else "deg"
     kind = "time per revolution" if motion.regime.value == "IV" else "period"
     # Without --omega0 or --length, omega0 = 1: time is counted in units of sqrt(l/g).
     second = "s" if omega0 is not None else "sqrt(l/g)"
-    when = "infinite" if math.isinf(motion.period) else f"{motion.period:.10g} {second}"
+    if motion.regime.value == "III":
+        when = "infinite"
+    elif math.isinf(motion.period):  # a finite period beyond the doubles (omega0 ~ 1e-320)
+        when = f"beyond the largest double (> {sys.float_info.max:.2g} {second})"
+    else:
+        when = f"{motion.period:.10g} {second}"
     print(f"# regime {motion.regime.value} ({motion.regime.name.lower()}), {kind} {when}")
     rate = unit + "/" + ("s" if omega0 is not None else "unit")
     print(f"{'t':>12}  {'theta/' + unit:>16}  {'theta_dot/' + rate:>18}")

@@ -51,8 +51,16 @@ def _chunk(th, v, w0):
         c1 = _dd.mul(*_dd.two_prod(w0, 2.0 * w0), st.beta, st.beta_lo)[0]
         c1 = np.where(np.isfinite(c1) & (w0 > 2.0 ** -400) & (w0 < 2.0 ** 400), c1,
                       v * v - 2.0 * w0 * w0 * (st.c - st.s) * (st.c + st.s))
-    _reject(~np.isfinite(c1), "dtheta0 is too large: the energy constant "
+    # Name the term that overflows: omega0 = 1e200 at rest is not a large dtheta0.
+    with np.errstate(over="ignore"):
+        fast, stiff = ~np.isfinite(v * v), ~np.isfinite(2.0 * w0 * w0)
+    bad = ~np.isfinite(c1)
+    _reject(bad & fast, "dtheta0 is too large: the energy constant "
             "c1 = dtheta0**2 - 2 omega0**2 cos(theta0) would overflow (|dtheta0| < 1e154)")
+    _reject(bad & stiff, "omega0 is too large: the energy constant "
+            "c1 = dtheta0**2 - 2 omega0**2 cos(theta0) would overflow (omega0 < 9e153)")
+    _reject(bad, "dtheta0 and omega0 are too large together: the energy constant "
+            "c1 = dtheta0**2 - 2 omega0**2 cos(theta0) would overflow")
     landen = _landen.constants(np.where(elliptic, st.mod_c, 1.0),
                                np.where(elliptic, st.mod_c_lo, 0.0))
     quarter = landen.quarter

@@ -22,6 +22,7 @@ is good to about 1e-2, the shooting at a given frequency to 1e-10 against a long
 
 from __future__ import annotations
 
+import operator
 from dataclasses import dataclass
 from typing import Any
 
@@ -31,6 +32,24 @@ from .._validation import positive_scalar, real_array, real_scalar
 from .resonance import PeriodicOrbit, _flow, _orbit, periodic_orbit
 
 __all__ = ["ResponseCurve", "response_curve"]
+
+
+def _count(value: Any, name: str, least: int) -> int:
+    """Return an integral ``value`` >= ``least`` as an int, or raise naming ``name``.
+
+    Any integral type is welcome (numpy's too: a count read from an array is an np.int64), but
+    not a bool or a float, which would be a mistake rather than a count.
+    """
+    if isinstance(value, (bool, np.bool_)):
+        raise TypeError(f"{name} must be an integer >= {least}, got a bool")
+    try:
+        number = operator.index(value)
+    except TypeError:
+        raise TypeError(f"{name} must be an integer >= {least}, "
+                        f"got {type(value).__name__}") from None
+    if number < least:
+        raise ValueError(f"{name} must be an integer >= {least}, got {number}")
+    return number
 
 
 @dataclass(frozen=True)
@@ -71,15 +90,28 @@ class ResponseCurve:
         x = np.array([o.state + (o.frequency,) for o in self.orbits[i - 1:i + 2]])
         s = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(x, axis=0), axis=1))])
         c = np.polyfit(s, values[i - 1:i + 2], 2)
-        vertex = -c[1] / (2 * c[0])
+        # values[i] is the extreme of the three, so the vertex lies between the neighbours; the
+        # clip keeps a flat or rounded-off parabola from reaching past them all the same.
+        vertex = float(np.clip(-c[1] / (2 * c[0]), s[0], s[2])) if c[0] != 0 else s[1]
         at = [float(np.polyval(np.polyfit(s, v[i - 1:i + 2], 2), vertex))
               for v in (self.frequency, self.amplitude)]
         return at[0], at[1], float(np.polyval(c, vertex))
 
     def peak(self) -> tuple[float, float]:
-        """Return (frequency, amplitude) of the largest amplitude, interpolated between orbits."""
-        omega, amplitude, _ = self._vertex(int(np.argmax(self.amplitude)), self.amplitude)
-        return omega, amplitude
+        """Return (frequency, amplitude) of the largest amplitude, interpolated between orbits.
+
+        An interior maximum is refined by the parabola through it and its two neighbours,
+        never beyond them. A maximum at an end of the curve (the peak lies outside the range of
+        frequencies) is that end orbit itself: there is nothing to interpolate toward, and a
+        parabola would extrapolate. So is the largest of one or two orbits.
+        """
+        amplitude = self.amplitude
+        i = int(np.argmax(amplitude))
+        if not 0 < i < len(self.orbits) - 1:
+            return float(self.frequency[i]), float(amplitude[i])
+        omega, top, _ = self._vertex(i, amplitude)
+        # The parabola through a maximum rises to at least the largest sample.
+        return omega, max(top, float(amplitude[i]))
 
     def folds(self) -> list[tuple[float, float]]:
         r"""Return the turning points (frequency, amplitude) where :math:`\Omega` reverses.
@@ -175,7 +207,8 @@ def response_curve(forcing: Any, damping: Any, omega0: Any = 1.0, *,
     Raises
     ------
     ValueError
-        For a parameter out of range. RuntimeError if the step collapses.
+        For a parameter out of range. RuntimeError if the step collapses. TypeError if
+        ``max_points`` is not an integer.
 
     Examples
     --------
@@ -199,8 +232,7 @@ def response_curve(forcing: Any, damping: Any, omega0: Any = 1.0, *,
         raise ValueError("frequencies must be a range (low, high) with 0 < low < high")
     step = positive_scalar(step, "step")
     tol = positive_scalar(tol, "tol")
-    if isinstance(max_points, bool) or not isinstance(max_points, int) or max_points < 2:
-        raise ValueError("max_points must be an integer >= 2")
+    max_points = _count(max_points, "max_points", 2)
     low, high = float(bounds[0]), float(bounds[1])
     first = periodic_orbit(low, forcing, damping, omega0, tol=tol)
     orbits = [first]

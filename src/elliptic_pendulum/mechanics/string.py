@@ -83,7 +83,13 @@ def string_stays_taut(theta0: Any, dtheta0: Any = 0.0, omega0: Any = 1.0) -> Any
     """
     theta0, dtheta0 = real_array(theta0, "theta0"), real_array(dtheta0, "dtheta0")
     omega0 = positive_scalar(omega0, "omega0")
-    e = (dtheta0 / omega0) ** 2 - 2.0 * np.cos(theta0)
+    # e = r^2 - 2 cos(theta0) with r = |dtheta0| / omega0. Beyond r = 1e10, e > 3 whatever the
+    # angle, so r is capped there and its square cannot overflow (dtheta0 = 1e200 is a fast
+    # rotation, taut). A quotient or square that underflows is 0 to rounding next to
+    # 2 cos(theta0), which is at least 6e-17 in size for every double angle.
+    with np.errstate(over="ignore", under="ignore"):
+        r = np.minimum(np.abs(dtheta0) / omega0, 1e10)
+        e = r * r - 2.0 * np.cos(theta0)
     taut = (e <= 0.0) | (e >= 3.0)
     if np.ndim(taut) == 0:
         return bool(taut)

@@ -33,6 +33,21 @@ __all__ = ["agm_period", "crossing_angle", "period", "period_ratio", "small_angl
 _SMALLEST_DISTANCE = math.pi - math.nextafter(math.pi, 0.0) + _PI_LO
 
 
+def _finite_period(periods: np.ndarray, ratio: np.ndarray, omega0: float) -> np.ndarray:
+    """``periods`` (computed with overflow silenced), or a ValueError naming omega0 if one is inf.
+
+    The period 2 pi R / omega0 leaves the doubles for omega0 below 2 pi R / 1.8e308 (about
+    3.5e-308 for small swings); an infinite period would be a silent wrong answer there.
+    """
+    if not np.all(np.isfinite(periods)):
+        largest = float(np.max(ratio))
+        least = 2 * math.pi * largest / np.finfo(float).max
+        raise ValueError(f"omega0 must exceed about {least:.3g} here (for R = {largest:.6g}): "
+                         "below that the period 2 pi R / omega0 is larger than the largest "
+                         f"double; got {omega0!r}")
+    return periods
+
+
 def _checked(value: npt.ArrayLike, name: str, valid: str) -> np.ndarray:
     """``value`` as a finite float array; a NaN or infinity is reported with the valid range."""
     try:
@@ -112,8 +127,11 @@ def period_ratio(theta0: npt.ArrayLike) -> FloatOrArray:
     True
     """
     amplitudes = _amplitudes(theta0)
-    half = 0.5 * amplitudes
-    k_integral = complete_integral(np.sin(half), kc=np.cos(half))
+    # A subnormal amplitude (1e-320) underflows in theta0/2 and its sine; R - 1 ~ theta0^2/16
+    # is far below rounding there, so the underflow is harmless and not worth a warning.
+    with np.errstate(under="ignore"):
+        half = 0.5 * amplitudes
+        k_integral = complete_integral(np.sin(half), kc=np.cos(half))
     # Dividing by the double pi/2 (not multiplying by 2/pi) gives R(0) == 1.0 exactly.
     return scalar_or_array(np.asarray(k_integral) / (0.5 * math.pi), amplitudes)
 
@@ -133,6 +151,12 @@ def small_angle_period(omega0: float) -> float:
     float
         The period in seconds.
 
+    Raises
+    ------
+    ValueError
+        If omega0 is not a finite number > 0, or so small (below about 3.5e-308) that the
+        period exceeds the largest double.
+
     Examples
     --------
     A one-metre pendulum beats close to seconds, which is how the metre was once proposed:
@@ -141,7 +165,8 @@ def small_angle_period(omega0: float) -> float:
     >>> round(small_angle_period(math.sqrt(9.80665 / 1.0)), 4)
     2.0064
     """
-    return 2 * math.pi / positive_scalar(omega0, "omega0")
+    omega0 = positive_scalar(omega0, "omega0")
+    return float(_finite_period(np.asarray(2 * math.pi / omega0), np.asarray(1.0), omega0))
 
 
 def period(theta0: npt.ArrayLike, omega0: float = 1.0) -> FloatOrArray:
@@ -162,6 +187,12 @@ def period(theta0: npt.ArrayLike, omega0: float = 1.0) -> FloatOrArray:
     float or ndarray
         The period, of the shape of ``theta0``.
 
+    Raises
+    ------
+    ValueError
+        If an amplitude is out of range, or omega0 is not a finite number > 0 or so small
+        (below about 3.5e-308 R(theta0)) that the period exceeds the largest double.
+
     Examples
     --------
     At amplitude 0 it is the period (8); a swing of 90 degrees takes 18% longer:
@@ -173,8 +204,10 @@ def period(theta0: npt.ArrayLike, omega0: float = 1.0) -> FloatOrArray:
     1.18
     """
     omega0 = positive_scalar(omega0, "omega0")
-    ratio = period_ratio(theta0)
-    return scalar_or_array(np.asarray(ratio) * (2 * math.pi / omega0), np.asarray(ratio))
+    ratio = np.asarray(period_ratio(theta0))
+    with np.errstate(over="ignore"):
+        periods = ratio * (2 * math.pi / omega0)
+    return scalar_or_array(_finite_period(periods, ratio, omega0), ratio)
 
 
 def _agm(a, b):
@@ -215,6 +248,12 @@ def agm_period(theta0: npt.ArrayLike, omega0: float = 1.0) -> FloatOrArray:
     :math:`b_{n+1} = \sqrt{a_n b_n}` from :math:`a_0 = 1, b_0 = \cos(\theta_0/2)`. It shares no
     code with :func:`~elliptic_pendulum.elliptic.complete_integral`.
 
+    Raises
+    ------
+    ValueError
+        If an amplitude is out of range, or omega0 is not a finite number > 0 or so small
+        (below about 3.5e-308 R(theta0)) that the period exceeds the largest double.
+
     Examples
     --------
     It agrees with (26) to rounding, also close to the top:
@@ -226,8 +265,13 @@ def agm_period(theta0: npt.ArrayLike, omega0: float = 1.0) -> FloatOrArray:
     """
     amplitudes = _amplitudes(theta0)
     omega0 = positive_scalar(omega0, "omega0")
-    return scalar_or_array(2 * math.pi / (omega0 * _agm(1.0, np.cos(0.5 * amplitudes))),
-                           amplitudes)
+    with np.errstate(under="ignore"):  # theta0/2 of a subnormal amplitude: cos is 1 anyway
+        mean = _agm(1.0, np.cos(0.5 * amplitudes))
+    # Where omega0 * mean underflows (omega0 ~ 1e-308) the period is beyond the doubles anyway
+    # (2 pi / 2.2e-308 > 1.8e308): _finite_period reports that instead of a warning and inf.
+    with np.errstate(over="ignore", under="ignore"):
+        periods = 2 * math.pi / (omega0 * mean)
+    return scalar_or_array(_finite_period(periods, 1.0 / mean, omega0), amplitudes)
 
 
 def _ratio_near_top(x):

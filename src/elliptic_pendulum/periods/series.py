@@ -23,7 +23,9 @@ alpha) with :math:`k_c = \sqrt{1 - k^2}` passed alongside where k is close to 1.
 
 from __future__ import annotations
 
+import functools
 import math
+import threading
 from fractions import Fraction
 from typing import Any
 
@@ -70,7 +72,10 @@ def period_series_coefficients(n: int) -> list[Fraction]:
 
     Notes
     -----
-    Exact integer arithmetic. With :math:`m = \sin^2(\theta_0/2)`,
+    Exact integer arithmetic, by a recurrence (below) that gives all n coefficients in
+    :math:`O(n^2)` big-integer operations; they are kept, so a second call costs nothing and a
+    longer one only continues from where the last stopped. The closed form they agree with:
+    with :math:`m = \sin^2(\theta_0/2)`,
     :math:`(2/\pi)K_1 = \sum_i c_i m^i`, :math:`c_i = \binom{2i}{i}^2/16^i` (DLMF 19.5.1), and the
     power of a sine as cosines of multiples,
 
@@ -80,8 +85,15 @@ def period_series_coefficients(n: int) -> list[Fraction]:
     the coefficient of :math:`\theta_0^{2n}` (n >= 1) is the finite sum
     :math:`a_n = \frac{2(-1)^n}{(2n)!}\sum_{r \ge 1}(-1)^r r^{2n}\sum_{i \ge r}
     \frac{c_i}{4^i}\binom{2i}{i-r}`, where i may run to any bound :math:`\ge n` (the terms with
-    i > n cancel: :math:`m^i = O(\theta_0^{2i})`). Scaled by a power of 64 it is a sum of
-    integers: :math:`O(n^2)` big-integer operations. Radius of convergence :math:`\pi` (in
+    i > n cancel: :math:`m^i = O(\theta_0^{2i})`). The recurrence: Legendre's equation for
+    :math:`K` in m becomes, in :math:`\theta_0`,
+    :math:`(\sin\theta_0\,R')' = \tfrac14\sin\theta_0\,R`; with
+    :math:`E_j = 64^j (2j)!\,a_j` (integers) and :math:`\sigma = (-1)^{N-j}`,
+
+    .. math:: 8(N+1)(2N+3)\,E_{N+1} = \sum_{j=0}^{N} \sigma\,64^{N+1-j}\,E_j
+              \left[(2N+3)\binom{2N+1}{2j} + 8j\binom{2N+3}{2j}\right].
+
+    Radius of convergence :math:`\pi` (in
     :math:`\theta_0`): the nearest singularities are the separatrix amplitudes :math:`\pm\pi`,
     where :math:`m = 1`.
 
@@ -103,18 +115,52 @@ def period_series_coefficients(n: int) -> list[Fraction]:
     >>> round(59 * math.pi**118 * float(a[59]) * math.pi / 2, 2)
     1.0
     """
-    n = _count(n, "n")
-    top = n - 1  # the bound M >= n - 1 of the sum over i
-    # W_r = sum_{i=r}^{M} binom(2i, i)^2 64^(M - i) binom(2i, i - r): c_i / 4^i = binom^2 / 64^i,
-    # scaled by 64^M to integers. It does not depend on n, so each a_n costs O(n).
-    weights = [sum(math.comb(2 * i, i) ** 2 * 64 ** (top - i) * math.comb(2 * i, i - r)
-                   for i in range(r, top + 1)) for r in range(top + 1)]
-    coefficients = [Fraction(1)]
-    for order in range(1, n):
-        total = sum((-1) ** r * r ** (2 * order) * weights[r] for r in range(1, top + 1))
-        coefficients.append(Fraction(2 * (-1) ** order * total,
-                                     math.factorial(2 * order) * 64**top))
-    return coefficients
+    # A new list each time: the cached tuple behind it must not be changed by the caller.
+    return list(_coefficients(_count(n, "n")))
+
+
+# E_j = 64^j (2j)! a_j, grown on demand by the recurrence of period_series_coefficients and
+# kept: the coefficients are exact, so they never change. Recomputing them on every call made
+# period_series(theta0, 400) take seconds each time.
+_SCALED = [1]
+_SCALED_LOCK = threading.Lock()
+
+
+def _binomials(n: int) -> list[int]:
+    """Return the row binom(n, 0..n), each from the last (the row costs what one comb does)."""
+    row = [1]
+    for k in range(n):
+        row.append(row[-1] * (n - k) // (k + 1))
+    return row
+
+
+def _scaled(n: int) -> list[int]:
+    """Return [E_0, ..., E_{n-1}], continuing the recurrence from the ones already known."""
+    with _SCALED_LOCK:
+        for order in range(len(_SCALED) - 1, n - 1):  # computes E_{order + 1}
+            inner, outer = _binomials(2 * order + 1), _binomials(2 * order + 3)
+            total = 0
+            for j, e in enumerate(_SCALED):
+                term = e * ((2 * order + 3) * inner[2 * j]
+                            + 8 * j * outer[2 * j]) << 6 * (order + 1 - j)
+                total += term if (order - j) % 2 == 0 else -term
+            quotient, remainder = divmod(total, 8 * (order + 1) * (2 * order + 3))
+            assert remainder == 0  # E_{N+1} is an integer: 64^n (2n)! a_n is one
+            _SCALED.append(quotient)
+        return _SCALED[:n]
+
+
+@functools.lru_cache(maxsize=16)
+def _coefficients(n: int) -> tuple[Fraction, ...]:
+    """Return a_0, ..., a_{n-1} as an immutable tuple of exact fractions."""
+    return tuple(Fraction(e, 64**j * math.factorial(2 * j)) for j, e in enumerate(_scaled(n)))
+
+
+@functools.lru_cache(maxsize=16)
+def _float_coefficients(n: int) -> tuple[float, ...]:
+    """Return a_0, ..., a_{n-1} rounded to doubles, for summing the series."""
+    # int / int is correctly rounded, as float(Fraction) is, without reducing the fraction.
+    return tuple(e / (64**j * math.factorial(2 * j)) for j, e in enumerate(_scaled(n)))
 
 
 def period_series(theta0: Any, terms: int) -> Any:
@@ -158,8 +204,8 @@ def period_series(theta0: Any, terms: int) -> Any:
                          f"there); got {theta0.tolist()!r}")
     x = theta0 * theta0
     total = np.zeros_like(x)
-    for coefficient in reversed(period_series_coefficients(terms)):
-        total = total * x + float(coefficient)
+    for coefficient in reversed(_float_coefficients(terms)):
+        total = total * x + coefficient
     return scalar_or_array(total, theta0)
 
 
@@ -176,7 +222,16 @@ def _root_nome(k: Any, kc: Any) -> tuple[np.ndarray, np.ndarray]:
         if np.any((kc < 0) | (kc > 1)):
             raise ValueError("kc (the complementary modulus sqrt(1 - k**2)) must lie in [0, 1]")
         k = np.sqrt((1.0 - kc) * (1.0 + kc))
-    k, kc = np.broadcast_arrays(k, kc)
+    return _root_nome_pair(k, kc), k
+
+
+def _root_nome_pair(k: np.ndarray, kc: np.ndarray) -> np.ndarray:
+    r"""sqrt(q) from a modulus pair each known to full relative precision (already checked).
+
+    Neither is recomputed from the other: kc = cos(theta0/2) rounds to 1 for small swings and
+    k = sqrt(1 - kc^2) would then be 0 (the nome with it), so the caller passes both.
+    """
+    k, kc = np.broadcast_arrays(np.asarray(k, dtype=float), np.asarray(kc, dtype=float))
     # pi K'/K with K = K1(k), K' = K1(kc), each seeded with the other one's complement (two
     # AGMs): neither is formed as 1 - something, so q = exp(-pi K'/K) is accurate for small kc.
     big = np.asarray(complete_integral(k, kc=kc), dtype=float)
@@ -196,7 +251,7 @@ def _root_nome(k: Any, kc: Any) -> tuple[np.ndarray, np.ndarray]:
         scale = np.sqrt(2.0 * (1.0 + kcs)) * (1.0 + np.sqrt(kcs))
         eps4 = (ks / scale) ** 8  # e <= 0.017 here, so e^17 is below rounding
         root[small] = ks / scale * np.sqrt(1.0 + eps4 * (2.0 + eps4 * (15.0 + 150.0 * eps4)))
-    return root, k
+    return root
 
 
 def nome(k: Any, kc: Any = None) -> Any:
@@ -240,8 +295,10 @@ def nome(k: Any, kc: Any = None) -> Any:
     >>> abs(nome(math.sqrt(0.5)) - math.exp(-math.pi)) < 1e-16
     True
     """
-    root, k = _root_nome(k, kc)
-    return scalar_or_array(root * root, k)
+    # For k below 1e-154, q ~ k^2/16 is below the doubles: 0 to rounding, without a warning.
+    with np.errstate(under="ignore"):
+        root, k = _root_nome(k, kc)
+        return scalar_or_array(root * root, k)
 
 
 def fourier_coefficients(theta0: Any, n: int) -> Any:
@@ -295,9 +352,14 @@ def fourier_coefficients(theta0: Any, n: int) -> Any:
     if np.any((theta0 < 0) | (theta0 >= math.pi)):
         raise ValueError("theta0 must be an amplitude in radians with 0 <= theta0 < pi; "
                          f"got {theta0.tolist()!r}")
-    half = 0.5 * theta0
-    root, _ = _root_nome(np.sin(half), np.cos(half))
     odd = 2.0 * np.arange(n) + 1.0
-    # q^(j + 1/2) as a power of sqrt(q): representable even where q itself would underflow.
-    power = root[..., None] ** odd
-    return 8.0 * power / (odd * (1.0 + power * power))
+    # Tiny amplitudes underflow on the way (theta0 / 2 when subnormal, the high powers of sqrt(q)
+    # always): those b_j are below the smallest double, and 0 is their value to rounding.
+    with np.errstate(under="ignore"):
+        half = 0.5 * theta0
+        # k = sin(theta0/2) and kc = cos(theta0/2) both as computed, each to full precision:
+        # recomputing k from kc (which rounds to 1 below theta0 ~ 2e-8) lost every digit of q.
+        root = _root_nome_pair(np.sin(half), np.cos(half))
+        # q^(j + 1/2) as a power of sqrt(q): representable even where q itself would underflow.
+        power = root[..., None] ** odd
+        return 8.0 * power / (odd * (1.0 + power * power))

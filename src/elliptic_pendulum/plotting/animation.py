@@ -19,6 +19,7 @@ Sixty to 120 frames keep a page light (about 25 kB per frame).
 from __future__ import annotations
 
 import math
+import operator
 import re
 from collections.abc import Sequence
 from typing import Any
@@ -83,6 +84,8 @@ def animate(motions: Motion | Sequence[Motion], duration: Any = None, frames: in
     ------
     ValueError
         If there is no motion or more than six, ``frames < 2``, or ``duration`` is not positive.
+    TypeError
+        If ``frames`` is not an integer (a bool or a float, say).
 
     Examples
     --------
@@ -107,7 +110,14 @@ def animate(motions: Motion | Sequence[Motion], duration: Any = None, frames: in
         raise ValueError(f"motions must hold between 1 and {len(_COLOURS)} motions")
     if any(not isinstance(m, Motion) or np.ndim(m.theta0) != 0 for m in motions):
         raise TypeError("motions must be scalar Motion objects from ep.solve")
-    if isinstance(frames, bool) or not isinstance(frames, int) or frames < 2:
+    # Any integral count (an np.int64 read from an array, say), but not a bool or a float.
+    if isinstance(frames, (bool, np.bool_)):
+        raise TypeError("frames must be an integer >= 2, got a bool")
+    try:
+        frames = operator.index(frames)
+    except TypeError:
+        raise TypeError(f"frames must be an integer >= 2, got {type(frames).__name__}") from None
+    if frames < 2:
         raise ValueError(f"frames must be an integer >= 2; got {frames!r}")
     end = _default_duration(motions) if duration is None else positive_scalar(duration,
                                                                                "duration")
