@@ -33,8 +33,8 @@ __all__ = ["CLAIMS", "KINDS", "STATUS", "Check", "claims_of", "coverage", "markd
 
 # --- the claims of the note and the statuses that are not computations --------------------
 
-#: The claims a reader of the note can point at: its 46 numbered equations, the parts of
-#: Proposition 1 and Lemma 2, the table of R(theta_0) and the three crossing angles.
+#: The claims a reader of the note can point at (its 46 numbered equations, the parts of
+#: Proposition 1 and Lemma 2, the table of R(theta_0) and the three crossing angles).
 CLAIMS: tuple[str, ...] = (
     *(f"({n})" for n in range(1, 47)),
     *(f"Proposition 1.{i}" for i in (1, 2, 3)),

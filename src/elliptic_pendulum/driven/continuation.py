@@ -27,6 +27,7 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
 from .._validation import positive_scalar, real_array, real_scalar
 from .resonance import PeriodicOrbit, _flow, _orbit, periodic_orbit
@@ -174,8 +175,8 @@ def _tangent(flow, previous):
     return t if t @ previous >= 0 else -t
 
 
-def response_curve(forcing: Any, damping: Any, omega0: Any = 1.0, *,
-                   frequencies: Any = (0.5, 1.5), step: float = 0.02,
+def response_curve(forcing: float, damping: float, omega0: float = 1.0, *,
+                   frequencies: npt.ArrayLike = (0.5, 1.5), step: float = 0.02,
                    max_points: int = 2000, tol: float = 1e-10) -> ResponseCurve:
     r"""Continue the periodic orbit of the driven pendulum across a range of frequencies.
 

@@ -26,20 +26,20 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 from scipy import integrate, optimize
 
-from .._validation import positive_scalar, real_array, real_scalar, scalar_or_array
+from .._validation import FloatOrArray, positive_scalar, real_array, real_scalar, scalar_or_array
 from ..elliptic import complete_integral
 from ..periods.period import period_ratio
 
 __all__ = ["PeriodicOrbit", "backbone_frequency", "duffing_backbone", "periodic_orbit"]
 
 
-def backbone_frequency(amplitude: Any = None, omega0: Any = 1.0, *,
-                       bottom_speed: Any = None) -> Any:
+def backbone_frequency(amplitude: npt.ArrayLike | None = None, omega0: float = 1.0, *,
+                       bottom_speed: npt.ArrayLike | None = None) -> FloatOrArray:
     r"""Angular frequency :math:`2\pi/P` of free motion: swings by amplitude, rotations by speed.
 
     .. math:: \omega(A) = \frac{\pi\,\omega_0}{2K_1(\sin(A/2))}, \qquad
@@ -107,7 +107,7 @@ def backbone_frequency(amplitude: Any = None, omega0: Any = 1.0, *,
     return scalar_or_array(speed * turn, v)
 
 
-def duffing_backbone(amplitude: Any, omega0: Any = 1.0) -> Any:
+def duffing_backbone(amplitude: npt.ArrayLike, omega0: float = 1.0) -> FloatOrArray:
     r"""Return the weakly nonlinear (Duffing) backbone, from sin(theta) ~ theta - theta^3/6.
 
     .. math:: \omega(A) \approx \omega_0\left(1 - \frac{A^2}{16}\right)
@@ -276,8 +276,8 @@ def _orbit(state, frequency, forcing, damping, omega0, flow=None) -> PeriodicOrb
                          _amplitude(sol), np.linalg.eigvals(monodromy), monodromy)
 
 
-def periodic_orbit(frequency: Any, forcing: Any, damping: Any, omega0: Any = 1.0, *,
-                   guess: Any = None, tol: float = 1e-10) -> PeriodicOrbit:
+def periodic_orbit(frequency: float, forcing: float, damping: float, omega0: float = 1.0, *,
+                   guess: npt.ArrayLike | None = None, tol: float = 1e-10) -> PeriodicOrbit:
     r"""Find a periodic orbit of the damped, driven pendulum by shooting.
 
     .. math:: \theta'' + 2\zeta\omega_0\theta' + \omega_0^2\sin\theta = F\cos\Omega t, \qquad

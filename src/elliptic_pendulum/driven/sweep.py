@@ -23,6 +23,7 @@ import math
 from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 from scipy import integrate
 
 from .._validation import positive_scalar, real_array, real_scalar
@@ -36,8 +37,9 @@ def _check_periods(periods: Any) -> int:
     return int(periods)
 
 
-def settle(frequency: Any, forcing: Any, damping: Any, omega0: Any = 1.0, *,
-           state: Any = (0.0, 0.0), periods: int = 80) -> tuple[tuple[float, float], float]:
+def settle(frequency: float, forcing: float, damping: float, omega0: float = 1.0, *,
+           state: npt.ArrayLike = (0.0, 0.0),
+           periods: int = 80) -> tuple[tuple[float, float], float]:
     r"""Integrate the driven pendulum for whole forcing periods; return the end and the swing.
 
     .. math:: y(N\,T_F), \qquad \tfrac12\left(\max\theta - \min\theta\right)
@@ -100,8 +102,8 @@ def settle(frequency: Any, forcing: Any, damping: Any, omega0: Any = 1.0, *,
     return (float(final[0]), float(final[1])), float(0.5 * (theta.max() - theta.min()))
 
 
-def sweep(frequencies: Any, forcing: Any, damping: Any, omega0: Any = 1.0, *,
-          state: Any = (0.0, 0.0), periods: int = 80) -> np.ndarray:
+def sweep(frequencies: npt.ArrayLike, forcing: float, damping: float, omega0: float = 1.0, *,
+          state: npt.ArrayLike = (0.0, 0.0), periods: int = 80) -> np.ndarray:
     r"""Settle at each frequency in turn, each run starting from where the last one ended.
 
     .. math:: y_{k+1}(0) = y_k(N\,T_{F,k}), \qquad A_k = \tfrac12(\max\theta - \min\theta)_k

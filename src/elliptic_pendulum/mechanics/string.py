@@ -36,6 +36,7 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
 from .._validation import positive_scalar, real_array, real_scalar, scalar_or_array
 from ..motion import Motion, solve
@@ -44,7 +45,8 @@ from ..regimes import Regime
 __all__ = ["FreeFlight", "free_flight", "slack_point", "string_stays_taut"]
 
 
-def string_stays_taut(theta0: Any, dtheta0: Any = 0.0, omega0: Any = 1.0) -> Any:
+def string_stays_taut(theta0: npt.ArrayLike, dtheta0: npt.ArrayLike = 0.0,
+                      omega0: float = 1.0) -> bool | npt.NDArray[np.bool_]:
     r"""Tell whether a string pendulum started from this state stays taut for all time.
 
     .. math:: T \ge 0 \text{ along the motion} \iff e \le 0 \text{ or } e \ge 3, \qquad
@@ -146,7 +148,8 @@ def _slack(motion: Motion) -> float | None:
     return float(optimize.brentq(tension, 0.0, top, xtol=1e-300, rtol=4 * np.finfo(float).eps))
 
 
-def slack_point(theta0: Any, dtheta0: Any = 0.0, omega0: Any = 1.0) -> tuple[float, float] | None:
+def slack_point(theta0: float, dtheta0: float = 0.0,
+                omega0: float = 1.0) -> tuple[float, float] | None:
     r"""Find the first time and angle at which a string pendulum's string goes slack.
 
     .. math:: T(t) = m\ell\,(c_1 + 3\omega_0^2\cos\theta(t)) = 0, \qquad
@@ -252,7 +255,7 @@ class FreeFlight:
         return scalar_or_array(x, t), scalar_or_array(y, t)
 
 
-def free_flight(theta0: Any, dtheta0: Any = 0.0, omega0: Any = 1.0) -> FreeFlight | None:
+def free_flight(theta0: float, dtheta0: float = 0.0, omega0: float = 1.0) -> FreeFlight | None:
     r"""Follow the bob of a string pendulum from where the string goes slack until it is taut again.
 
     From the slack point :math:`(x_0, y_0) = (\sin\theta_s, -\cos\theta_s)` with velocity

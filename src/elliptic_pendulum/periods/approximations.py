@@ -27,8 +27,9 @@ import math
 from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
-from .._validation import real_array, scalar_or_array
+from .._validation import FloatOrArray, real_array, scalar_or_array
 from .series import period_series
 
 __all__ = ["agm_ratio", "kidd_fogg_ratio", "lima_arun_ratio", "log_ratio",
@@ -43,7 +44,7 @@ def _amplitudes(theta0: Any) -> np.ndarray:
     return theta0
 
 
-def agm_ratio(theta0: Any, steps: int) -> Any:
+def agm_ratio(theta0: npt.ArrayLike, steps: int) -> FloatOrArray:
     r"""Approximate R by ``steps`` steps of Gauss's arithmetic-geometric mean.
 
     .. math:: a_0 = 1,\; b_0 = \cos\frac{\theta_0}{2},\quad
@@ -86,7 +87,7 @@ def agm_ratio(theta0: Any, steps: int) -> Any:
     return scalar_or_array(1.0 / a, theta0)
 
 
-def log_ratio(theta0: Any, terms: int = 2) -> Any:
+def log_ratio(theta0: npt.ArrayLike, terms: int = 2) -> FloatOrArray:
     r"""Approximate R near the top by its logarithmic law.
 
     .. math:: R \approx \frac{2}{\pi}\left[\log\frac{4}{k_c}
@@ -133,7 +134,7 @@ def log_ratio(theta0: Any, terms: int = 2) -> Any:
     return scalar_or_array(k_integral / (0.5 * math.pi), theta0)
 
 
-def kidd_fogg_ratio(theta0: Any) -> Any:
+def kidd_fogg_ratio(theta0: npt.ArrayLike) -> FloatOrArray:
     r"""Kidd and Fogg's approximation of R, a pocket-calculator formula.
 
     .. math:: R \approx \frac{1}{\sqrt{\cos(\theta_0/2)}}
@@ -164,7 +165,7 @@ def kidd_fogg_ratio(theta0: Any) -> Any:
     return scalar_or_array(1.0 / np.sqrt(np.cos(0.5 * theta0)), theta0)
 
 
-def lima_arun_ratio(theta0: Any) -> Any:
+def lima_arun_ratio(theta0: npt.ArrayLike) -> FloatOrArray:
     r"""Lima and Arun's logarithmic approximation of R.
 
     .. math:: R \approx \frac{-\log a}{1 - a}, \qquad a = \cos\frac{\theta_0}{2}
@@ -199,7 +200,7 @@ def lima_arun_ratio(theta0: Any) -> Any:
     return scalar_or_array(np.where(x > 0, -np.log1p(-safe) / safe, 1.0), theta0)
 
 
-def ratio_approximations(theta0: Any) -> dict[str, Any]:
+def ratio_approximations(theta0: npt.ArrayLike) -> dict[str, FloatOrArray]:
     r"""Every approximation of R in this module and the series, keyed by a short label.
 
     .. math:: R(\theta_0) = \frac{2}{\pi}K_1\!\left(\sin\frac{\theta_0}{2}\right) \approx \dots

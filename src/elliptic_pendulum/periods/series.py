@@ -30,8 +30,9 @@ from fractions import Fraction
 from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
-from .._validation import real_array, scalar_or_array
+from .._validation import FloatOrArray, real_array, scalar_or_array
 from ..elliptic import complete_integral
 
 __all__ = ["fourier_coefficients", "nome", "period_series", "period_series_coefficients"]
@@ -163,7 +164,7 @@ def _float_coefficients(n: int) -> tuple[float, ...]:
     return tuple(e / (64**j * math.factorial(2 * j)) for j, e in enumerate(_scaled(n)))
 
 
-def period_series(theta0: Any, terms: int) -> Any:
+def period_series(theta0: npt.ArrayLike, terms: int) -> FloatOrArray:
     r"""Sum the Maclaurin series of R(theta0) to ``terms`` terms.
 
     .. math:: R_N(\theta_0) = \sum_{j=0}^{N-1} a_j\,\theta_0^{2j}
@@ -254,7 +255,7 @@ def _root_nome_pair(k: np.ndarray, kc: np.ndarray) -> np.ndarray:
     return root
 
 
-def nome(k: Any, kc: Any = None) -> Any:
+def nome(k: npt.ArrayLike, kc: npt.ArrayLike | None = None) -> FloatOrArray:
     r"""Jacobi's nome q of the modulus k.
 
     .. math:: q = \exp\!\left(-\pi\,\frac{K_1(k_c)}{K_1(k)}\right)
@@ -301,7 +302,7 @@ def nome(k: Any, kc: Any = None) -> Any:
         return scalar_or_array(root * root, k)
 
 
-def fourier_coefficients(theta0: Any, n: int) -> Any:
+def fourier_coefficients(theta0: npt.ArrayLike, n: int) -> npt.NDArray[np.float64]:
     r"""Sine coefficients of a swing of amplitude theta0, t from a passage through the bottom.
 
     .. math:: \theta(t) = \sum_{j=0}^{\infty} b_j \sin\frac{(2j+1)\,2\pi t}{T}, \qquad

@@ -54,7 +54,7 @@ def _default_duration(motions: Sequence[Motion]) -> float:
     return max(finite) if finite else fallback
 
 
-def animate(motions: Motion | Sequence[Motion], duration: Any = None, frames: int = 90,
+def animate(motions: Motion | Sequence[Motion], duration: float | None = None, frames: int = 90,
             interval: float = 50.0) -> Any:
     r"""Animate pendulums beside their points on the phase plane.
 
@@ -184,7 +184,8 @@ def animate(motions: Motion | Sequence[Motion], duration: Any = None, frames: in
     return anim
 
 
-def animation_html(motions: Motion | Sequence[Motion], duration: Any = None, frames: int = 90,
+def animation_html(motions: Motion | Sequence[Motion], duration: float | None = None,
+                   frames: int = 90,
                    interval: float = 50.0) -> str:
     r"""Render :func:`animate` as matplotlib's self-contained JavaScript player, then close it.
 

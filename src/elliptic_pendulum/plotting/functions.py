@@ -14,6 +14,7 @@ from collections.abc import Callable, Sequence
 from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
 from ..elliptic import am, complete_integral, incomplete_integral, inverse_integral, jacobi
 from ..extension import periodic_extension, staircase_extension
@@ -25,7 +26,7 @@ __all__ = ["plot_jacobi", "plot_integral", "plot_inverse", "plot_amplitude", "pl
 _axes = new_axes
 
 
-def plot_jacobi(k: float, u: Any, ax: Any = None, kc: float | None = None) -> Any:
+def plot_jacobi(k: float, u: npt.ArrayLike, ax: Any = None, kc: float | None = None) -> Any:
     """Plot sn, cn and dn over the given u (several periods), modulus k (or kc)."""
     ax = _axes(ax)
     u = np.asarray(u, dtype=float)
@@ -65,7 +66,7 @@ def plot_inverse(moduli: Sequence[float] = (0.5, 0.9, 0.99), ax: Any = None) -> 
     return readable(ax)
 
 
-def plot_amplitude(k: float, u: Any, ax: Any = None) -> Any:
+def plot_amplitude(k: float, u: npt.ArrayLike, ax: Any = None) -> Any:
     r"""Plot am(u, k) = Î of (41) with its linear part and its periodic remainder.
 
     The linear part is τu with τ = π/(2K1) (45); the remainder am(u) - τu has period 2K1.

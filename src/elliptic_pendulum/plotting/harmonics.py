@@ -14,6 +14,7 @@ from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
 from ..motion import solve
 from ..periods.approximations import ratio_approximations
@@ -94,7 +95,7 @@ def plot_period_ratio(ax: Any = None, crossings: Sequence[float] = (2.0, 3.0, 4.
     return readable(ax)
 
 
-def plot_approximation_error(ax: Any = None, amplitudes: Any = None) -> Any:
+def plot_approximation_error(ax: Any = None, amplitudes: npt.ArrayLike | None = None) -> Any:
     r"""Plot the relative error of the laboratory's approximations of R, on log scales.
 
     .. math:: \left|\frac{\tilde R(\theta_0)}{R(\theta_0)} - 1\right|, \qquad

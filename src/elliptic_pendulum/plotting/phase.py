@@ -11,6 +11,7 @@ from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
 from ..motion import Motion, solve
 from ..numerics import integrate
@@ -253,7 +254,7 @@ def plot_phase_portrait(omega0: float = 1.0, ax: Any = None,
     return readable(ax)
 
 
-def plot_motion(motions: Motion | Sequence[Motion], t: Any, axes: Any = None,
+def plot_motion(motions: Motion | Sequence[Motion], t: npt.ArrayLike, axes: Any = None,
                 compare: bool = True, labels: Sequence[str] | None = None) -> Any:
     """Plot θ(t) and θ'(t) from the closed form, one line per motion.
 

@@ -13,6 +13,7 @@ import math
 from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
 from ..driven.continuation import ResponseCurve
 from ..driven.resonance import backbone_frequency, duffing_backbone
@@ -23,7 +24,7 @@ __all__ = ["plot_backbone", "plot_response", "plot_sweep", "backbone_plot", "res
 
 
 def plot_backbone(omega0: float = 1.0, ax: Any = None, against: str = "amplitude",
-                  duffing: bool = True, points: Any = None,
+                  duffing: bool = True, points: tuple[npt.ArrayLike, npt.ArrayLike] | None = None,
                   points_label: str = "solve_ivp") -> Any:
     r"""Plot the backbone, the frequency of free motion, against amplitude or energy.
 
@@ -114,7 +115,8 @@ def plot_backbone(omega0: float = 1.0, ax: Any = None, against: str = "amplitude
 def plot_response(curve: ResponseCurve, ax: Any = None, *, color: str = "C0",
                   label: str | None = None, omega0: float = 1.0, backbone: bool = True,
                   duffing: bool = False, linear: tuple[float, float] | None = None,
-                  points: Any = None, folds: bool = True, jumps: bool = True,
+                  points: tuple[npt.ArrayLike, npt.ArrayLike] | None = None,
+                  folds: bool = True, jumps: bool = True,
                   peak: bool = False, legend: str | None = "upper left") -> Any:
     r"""Plot the response curve: periodic motions' amplitude against forcing frequency.
 
@@ -217,7 +219,8 @@ def plot_response(curve: ResponseCurve, ax: Any = None, *, color: str = "C0",
     return readable(ax)
 
 
-def plot_sweep(curve: ResponseCurve, up: Any, down: Any, ax: Any = None) -> Any:
+def plot_sweep(curve: ResponseCurve, up: tuple[npt.ArrayLike, npt.ArrayLike],
+               down: tuple[npt.ArrayLike, npt.ArrayLike], ax: Any = None) -> Any:
     r"""Plot a slow sweep of the forcing frequency, up and down, over the response curve.
 
     .. math:: \Omega(t) = \Omega_{\text{start}} \pm r\,t
