@@ -68,7 +68,9 @@ def _constants(kc: Any, kc_lo: Any = 0.0) -> Constants:
     # makes the extra steps of the recurrence in `core` exact identities (d = 1). So an
     # element gets the same bits alone or beside a slower modulus (no dependence on the batch).
     a, b = np.ones_like(kc), kc.copy()
-    done = np.abs(a - b) <= 4e-16 * (a + b)
+    # Every kc < 1 takes at least one step: stopped at level 0 (1 - kc <= 8e-16), the
+    # recurrence would give dn = cn = kc at v = 0 instead of 1, some 4 ulp off.
+    done = a == b
     mu, nu = [a], [np.where(done, a, b)]
     while not np.all(done):
         a, b = np.where(done, a, 0.5 * (a + b)), np.where(done, b, np.sqrt(a * b))

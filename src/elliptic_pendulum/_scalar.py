@@ -202,7 +202,7 @@ def _half_angle(th):
 @lru_cache(maxsize=256)
 def _agm(kc: float, kc_lo: float) -> _landen.Constants:
     a, b = 1.0, kc
-    done = abs(a - b) <= 4e-16 * (a + b)
+    done = a == b  # at least one step for kc < 1, as in _landen._constants
     mu, nu = [a], [a if done else b]
     while not done:
         a, b = 0.5 * (a + b), math.sqrt(a * b)
