@@ -48,3 +48,50 @@ def test_small_states_come_back_at_t0_and_circular_dn_is_one():
     ref = np.array([float(ctx.ellipfun("dn", ctx.mpf(a), m=ctx.mpf(b) ** 2))
                     for a, b in zip(u, k, strict=True)])
     assert np.max(np.abs(ep.dn(u, k) - ref)) <= 2.0 ** -51
+
+
+def _top_reference(theta0, dtheta0, omega0, times):
+    """theta, theta' of the push dtheta0 from exactly n pi (n odd, the double theta0), by
+    mpmath: theta = (n - 1) pi + sigma 2 am(omega0 k t + sigma K, 1/k), theta' = sigma 2 omega0
+    k dn(...), k^2 = 1 + (dtheta0 / (2 omega0))^2 (the note's (46) with c4 = sigma K, since
+    am(K) = pi/2). 1 - 1/k^2 is about w^2: the context carries 2 |log10 w| + 60 digits."""
+    w = abs(dtheta0) / (2 * omega0)
+    ctx = _ctx(int(-2 * math.log10(w)) + 60 if w < 1 else 60)
+    n = round(theta0 / math.pi)
+    sigma = 1 if dtheta0 > 0 else -1
+    wm = ctx.mpf(dtheta0) / (2 * ctx.mpf(omega0))
+    k = ctx.sqrt(1 + wm * wm)
+    m = 1 / (k * k)
+    quarter = ctx.ellipk(m)
+    theta, dtheta = [], []
+    for t in times:
+        u = ctx.mpf(omega0) * k * ctx.mpf(float(t)) + sigma * quarter
+        j = ctx.nint(u / (2 * quarter))          # am(v + 2 j K) = am(v) + j pi
+        v = u - 2 * quarter * j
+        sn, cn, dn = (ctx.ellipfun(f, v, m=m) for f in ("sn", "cn", "dn"))
+        theta.append(float((n - 1) * ctx.pi + sigma * 2 * (j * ctx.pi + ctx.atan2(sn, cn))))
+        dtheta.append(float(sigma * 2 * ctx.mpf(omega0) * k * dn))
+    return np.array(theta), np.array(dtheta)
+
+
+@pytest.mark.parametrize(("theta0", "dtheta0", "omega0"), [
+    (math.pi, 1e-200, 1.0), (math.pi, 1e-160, 1.0), (-math.pi, 1e-190, 1.0),
+    (3 * math.pi, -1e-250, 1.0), (math.pi, 1e-60, 1e120),
+    (-math.pi, -1e-100, 2.5)])
+def test_tiny_push_from_the_top_goes_round_once_per_period(theta0, dtheta0, omega0):
+    # A push below 1e-155 rad/s from the top: d0 * d0 underflowed in the addition theorem of
+    # regime IV, so theta(P/2) came back at the top (2 pi short; 8e-5 off at a push of
+    # 1e-160) and theta'(P/2) was 0 / 0 (ZeroDivisionError on the scalar path, NaN in an
+    # array). Reference: the closed form (46) in mpmath (see _top_reference).
+    with np.errstate(all="raise"):
+        m = ep.solve(theta0, dtheta0, omega0)
+        period = m.period
+        times = np.concatenate([np.linspace(0.0, 1.05 * period, 15),
+                                np.linspace(0.45 * period, 0.55 * period, 15)])
+        theta, dtheta = m.state(times)
+        scalar = [m.state(float(t)) for t in times]
+    ref_theta, ref_dtheta = _top_reference(theta0, dtheta0, omega0, times)
+    size = 2 * omega0 * math.hypot(1.0, dtheta0 / (2 * omega0))  # max |theta'|
+    assert np.max(np.abs(theta - ref_theta)) <= 4 * math.ulp(np.max(np.abs(ref_theta)))
+    assert np.max(np.abs(dtheta - ref_dtheta)) <= 4 * math.ulp(size)
+    assert scalar == list(zip(theta.tolist(), dtheta.tolist(), strict=True))

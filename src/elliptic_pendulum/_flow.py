@@ -23,6 +23,8 @@ from .regimes import LIBRATION, ROTATION, SEPARATRIX
 __all__ = ["Params", "evaluate", "CHUNK"]
 
 CHUNK = 2 ** 15
+# Below this d0 = dn(u0) (IV), the addition theorem is rescaled (see _rotation).
+_DEEP = 2.0 ** -300
 
 
 class Params(NamedTuple):
@@ -149,17 +151,28 @@ def _rotation(p: Params, sn, cn, dn, want_theta: bool, want_dtheta: bool):
     """
     s, c, w, k, sigma = p.s, p.c, p.w, p.k, p.sigma
     aw = np.abs(w)
+    d0 = aw / k
+    # Both pairs below share the factor (s^2 cn^2 + w^2) / k^2 >= d0^2, which leaves the
+    # normal doubles when a tiny push leaves the top (d0 < 1e-154; theta went round once
+    # too few, theta' was 0 / 0). Below d0 = 2**-300, c, d0 and one factor cn are multiplied
+    # by lam = 2**-e ~ 1/d0 (exact): the factor is then >= d0 / 2 >= 5e-301, and the
+    # products that still underflow are below its ulp. Elsewhere lam = 1: the same bits.
+    c_l, d0_l, cn_l = c, d0, cn
+    deep = d0 < _DEEP
+    if np.any(deep):
+        lam = np.where(deep, np.ldexp(1.0, -np.frexp(d0)[1]), 1.0)
+        c_l, d0_l, cn_l = lam * c, lam * d0, lam * cn
     yx = dtheta = None
     if want_theta:
-        d0 = aw / k
         d0m1 = -(s / k) * (s / (aw + k))
-        spread = cn * cn + d0 * sn * sn
-        yx = (sigma * s * dn * spread + c * sn * cn * d0m1,
-              c * spread - sigma * s * sn * cn * dn * d0m1)
+        spread = cn * cn_l + d0_l * sn * sn
+        yx = (sigma * s * dn * spread + c_l * sn * cn * d0m1,
+              c * spread - sigma * s * sn * cn_l * dn * d0m1)
     if want_dtheta:                        # theta' = +-2 (w0 / gamma) dn(u)
         # divided through by k^2, which may be huge when omega0 is tiny
-        d0, s_k = aw / k, s / k
-        dn_u = (d0 * dn - sigma * s_k * (c / k) * sn * cn) / (d0 * d0 + s_k * s_k * cn * cn)
+        s_k = s / k
+        dn_u = ((d0_l * dn - sigma * s_k * (c_l / k) * sn * cn)
+                / (d0_l * d0 + s_k * s_k * cn * cn_l))
         dtheta = sigma * 2.0 * p.rate * dn_u
     return yx, dtheta
 

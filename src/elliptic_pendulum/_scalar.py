@@ -31,6 +31,7 @@ from ._dd import (
     two_prod,
     two_sum,
 )
+from ._flow import _DEEP
 
 __all__ = ["jacobi", "landen", "state"]
 
@@ -110,19 +111,24 @@ def state(p, t: float, want_theta: bool = True, want_dtheta: bool = True):
     theta = dtheta = None
     if rot:
         aw = abs(w)
+        d0 = aw / k
+        c_l, d0_l, cn_l = cs, d0, cn
+        if d0 < _DEEP:  # rescaled as in _flow._rotation
+            lam = math.ldexp(1.0, -math.frexp(d0)[1])
+            c_l, d0_l, cn_l = lam * cs, lam * d0, lam * cn
         if want_theta:
-            d0 = aw / k
             d0m1 = -(s / k) * (s / (aw + k))
-            spread = cn * cn + d0 * sn * sn
-            y = sigma * s * dn * spread + cs * sn * cn * d0m1
-            x = cs * spread - sigma * s * sn * cn * dn * d0m1
+            spread = cn * cn_l + d0_l * sn * sn
+            y = sigma * s * dn * spread + c_l * sn * cn * d0m1
+            x = cs * spread - sigma * s * sn * cn_l * dn * d0m1
             delta = _f(np.arctan2, y, x)
             quarters, rest = am
             theta, small = _turned(p, quarters, rest + delta)
             redo = abs(small) < (abs(rest) + abs(delta)) * (1.0 / 64.0)
         if want_dtheta:
-            d0, s_k = aw / k, s / k
-            dn_u = (d0 * dn - sigma * s_k * (cs / k) * sn * cn) / (d0 * d0 + s_k * s_k * cn * cn)
+            s_k = s / k
+            dn_u = ((d0_l * dn - sigma * s_k * (c_l / k) * sn * cn)
+                    / (d0_l * d0 + s_k * s_k * cn * cn_l))
             dtheta = sigma * 2.0 * p.rate * dn_u
     else:
         if want_theta:
