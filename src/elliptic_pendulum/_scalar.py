@@ -39,7 +39,14 @@ LIBRATION, SEPARATRIX, ROTATION = 1, 2, 3
 
 
 def _f(ufunc, *args):
-    return float(ufunc(*args))
+    # Underflow to a subnormal or zero is the right answer, and the array path ignores it
+    # (np.errstate(under="ignore")); so here, whatever the caller's np.seterr or warning
+    # filters. Entering np.errstate costs a microsecond: only on the rare call that signals.
+    try:
+        return float(ufunc(*args))
+    except (FloatingPointError, RuntimeWarning):
+        with np.errstate(under="ignore"):
+            return float(ufunc(*args))
 
 
 @lru_cache(maxsize=256)
