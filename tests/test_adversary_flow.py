@@ -111,3 +111,33 @@ def test_subnormal_swing_is_silent_on_the_scalar_path(theta0):
             got = m.theta(t)
             assert got == float(m.theta(np.array([t]))[0])
         assert abs(got - expected) <= 2 * math.ulp(theta0)
+
+
+def test_an_element_does_not_overflow_for_its_companions():
+    # solve([1e-300, 0], [0, 3], [1e90, 1]).dtheta([1e-90, 1]) overflowed (FloatingPointError
+    # under errstate raise): the formula of regime IV, run over the whole chunk, overflowed
+    # on the tiny swing, which alone is silent. References: the tiny swing is theta0 cos(w0 t)
+    # to a relative theta0^2 (the note's (8)), so theta' = -theta0 w0 sin(w0 t); the
+    # rotation (0, 3) is theta' = 2 k dn(k t, 1/k), k = 3/2 (the note's (46)), by mpmath.
+    ctx = _ctx(50)
+    with np.errstate(all="raise"):
+        got = ep.solve([1e-300, 0.0], [0.0, 3.0], [1e90, 1.0]).dtheta([1e-90, 1.0])
+    expected = [float(-ctx.mpf(1e-300) * ctx.mpf(1e90) * ctx.sin(ctx.mpf(1e90) * ctx.mpf(1e-90))),
+                float(3 * ctx.ellipfun("dn", ctx.mpf(1.5), m=1 / ctx.mpf(2.25)))]
+    assert abs(got[0] - expected[0]) <= 2 * math.ulp(1e-300 * 1e90)
+    assert abs(got[1] - expected[1]) <= 2 * math.ulp(3.0)
+    # Many such companions, bit for bit as alone (and silent) under errstate raise.
+    rng = np.random.default_rng(4)
+    n = 60
+    omega0 = np.where(rng.random(n) < 0.5, 10.0 ** rng.uniform(40, 150, n), 1.0)
+    theta0 = np.where(omega0 > 1, rng.choice([-1, 1], n) * 10.0 ** rng.uniform(-305, -250, n),
+                      rng.choice([0.0, math.pi, 3.0, -2.0], n))
+    dtheta0 = np.where(omega0 > 1, 0.0, rng.choice([3.0, -2.5, 1e-200, 2.0, 0.5], n))
+    t = rng.uniform(-3, 3, n) / omega0
+    with np.errstate(all="raise"):
+        together = ep.solve(theta0, dtheta0, omega0).state(t)
+        alone = [ep.solve(*x).state(np.array(y)) for *x, y in
+                 zip(theta0.tolist(), dtheta0.tolist(), omega0.tolist(), t.tolist(), strict=True)]
+    for i, (a, b) in enumerate(alone):
+        assert together[0][i].tobytes() == np.float64(a).tobytes()
+        assert together[1][i].tobytes() == np.float64(b).tobytes()

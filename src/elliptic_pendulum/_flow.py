@@ -84,11 +84,14 @@ def _kernel(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool):
         rot_yx: Any
         # Each formula runs over the whole chunk and np.where keeps it where its regime is:
         # elsewhere (a state at rest, say) it may divide 0 by 0, harmlessly.
+        # The other regimes' states enter each formula as a harmless stand-in, so that no
+        # element overflows for its companions (a tiny swing with a huge omega0 would in
+        # the formula of IV): each element signals what it signals alone.
         with np.errstate(invalid="ignore", divide="ignore"):
-            lib_yx, dtheta = (_libration(p, sn, cn, dn, want_theta, want_dtheta) if any_lib
-                              else (None, None))
-            rot_yx, dth_r = (_rotation(p, sn, cn, dn, want_theta, want_dtheta) if any_rot
-                             else (None, None))
+            lib_yx, dtheta = (_libration(_alone(p, lib, 0.0, 1.0, 0.0), sn, cn, dn,
+                                         want_theta, want_dtheta) if any_lib else (None, None))
+            rot_yx, dth_r = (_rotation(_alone(p, rot, 0.0, 1.0, 1.0), sn, cn, dn,
+                                       want_theta, want_dtheta) if any_rot else (None, None))
         if any_rot and want_dtheta:
             dtheta = dth_r if dtheta is None else np.where(rot, dth_r, dtheta)
         redo = None
@@ -112,7 +115,7 @@ def _kernel(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool):
     sep = (p.code == SEPARATRIX) & ~p.still
     if np.any(sep):
         with np.errstate(invalid="ignore", divide="ignore"):  # as above, for other regimes
-            th_s, dth_s = _separatrix(p, t)
+            th_s, dth_s = _separatrix(_alone(p, sep, 0.0, 1.0, 1.0), t)
         theta = th_s if theta is None else np.where(sep, th_s, theta)
         dtheta = dth_s if dtheta is None else np.where(sep, dth_s, dtheta)
     shape = np.broadcast_shapes(np.shape(t), np.shape(p.code))
@@ -122,6 +125,15 @@ def _kernel(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool):
         theta = np.where(p.still, p.theta0, theta)
         dtheta = np.where(p.still, 0.0, dtheta)
     return theta, dtheta
+
+
+def _alone(p: Params, keep, s: float, c: float, w: float) -> Params:
+    """Return p with the states outside ``keep`` replaced by (s, c, w, k = 1, sigma = 1)."""
+    if np.all(keep):
+        return p
+    return p._replace(s=np.where(keep, p.s, s), c=np.where(keep, p.c, c),
+                      w=np.where(keep, p.w, w), k=np.where(keep, p.k, 1.0),
+                      sigma=np.where(keep, p.sigma, 1.0))
 
 
 def _libration(p: Params, sn, cn, dn, want_theta: bool, want_dtheta: bool):
