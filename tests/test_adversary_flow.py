@@ -141,3 +141,26 @@ def test_an_element_does_not_overflow_for_its_companions():
     for i, (a, b) in enumerate(alone):
         assert together[0][i].tobytes() == np.float64(a).tobytes()
         assert together[1][i].tobytes() == np.float64(b).tobytes()
+
+
+@pytest.mark.parametrize("n", [2, 4096, 4097])
+def test_a_motion_does_not_alias_its_callers_arrays(n):
+    # Up to 4096 states a Motion kept views of the caller's arrays: writing into them after
+    # solve changed m.theta0 and m.theta(1.0) (not the regimes). Reference: the same states
+    # solved from private copies; and the stored arrays refuse writes.
+    rng = np.random.default_rng(n)
+    th, v, w0 = rng.uniform(-3, 3, n), rng.uniform(-3, 3, n), rng.uniform(0.5, 2, n)
+    th[:2] = [0.0, math.pi]
+    copies = [x.copy() for x in (th, v, w0)]
+    m = ep.solve(th, v, w0)
+    before = m.state(1.0)
+    for x in (th, v, w0):
+        x[:] = 5.0
+    reference = ep.solve(*copies)
+    for name in ("theta0", "dtheta0", "omega0", "energy_constant", "period", "phase"):
+        np.testing.assert_array_equal(getattr(m, name), getattr(reference, name))
+    np.testing.assert_array_equal(m.state(1.0), reference.state(1.0))
+    np.testing.assert_array_equal(m.state(1.0), before)
+    for value in (m.theta0, m.period, m.regime, m[1:].theta0, m[[0, 1]].dtheta0):
+        with pytest.raises(ValueError, match="read-only"):
+            value[0] = 1.0

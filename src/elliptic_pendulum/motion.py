@@ -41,7 +41,8 @@ class Motion:
     A Motion holds one state (its attributes are Python floats) or an array of states of
     shape ``S`` (its attributes are arrays of that shape; ``regime`` an array of
     :class:`~elliptic_pendulum.regimes.Regime`). ``m[i]``, ``len(m)`` and iteration give
-    the Motions of single states.
+    the Motions of single states. Its arrays are its own (copies of the initial states)
+    and read-only: a Motion does not change when the caller's arrays do.
 
     Attributes
     ----------
@@ -198,7 +199,7 @@ class Motion:
         values = (self.regime, self.theta0, self.dtheta0, self.omega0, self.energy_constant,
                   self.modulus, self.complementary_modulus, self.amplitude, self.phase,
                   self.direction, self.period, self._beta)
-        return Motion(*_states.pick(values, self._p, self.shape, index))
+        return Motion(*_frozen(_states.pick(values, self._p, self.shape, index)))
 
     def __iter__(self) -> Iterator[Motion]:
         """Yield the Motions of the states along the first axis of S."""
@@ -295,8 +296,20 @@ def solve(theta0: ArrayLike, dtheta0: ArrayLike = 0.0, omega0: ArrayLike = 1.0) 
     except ValueError:
         raise ValueError(f"theta0, dtheta0 and omega0 must broadcast together (numpy rules); "
                          f"got shapes {th.shape}, {v.shape}, {w0.shape}") from None
-    public, p = _states.solve(*(np.broadcast_to(x, shape) for x in (th, v, w0)))
+    # Copies (np.asarray and broadcast_to may alias the caller's arrays), made read-only
+    # below with everything else: a Motion must not change when its caller's arrays do.
+    public, p = _states.solve(*(np.array(np.broadcast_to(x, shape)) for x in (th, v, w0)))
     regime = np.empty(shape, dtype=object)
     for number, member in enumerate(REGIMES):
         regime[p.code == number] = member
-    return Motion(*_states.plain([regime, *public], p))
+    return Motion(*_frozen(_states.plain([regime, *public], p)))
+
+
+def _frozen(fields: Any) -> Any:
+    """Return ``fields`` with every array in it (nested in tuples too) made read-only."""
+    if isinstance(fields, np.ndarray):
+        fields.flags.writeable = False
+    elif isinstance(fields, (tuple, list)):
+        for x in fields:
+            _frozen(x)
+    return fields
