@@ -164,3 +164,26 @@ def test_a_motion_does_not_alias_its_callers_arrays(n):
     for value in (m.theta0, m.period, m.regime, m[1:].theta0, m[[0, 1]].dtheta0):
         with pytest.raises(ValueError, match="read-only"):
             value[0] = 1.0
+
+
+@pytest.mark.parametrize("omega0", [1.0, 2.0, 1e-3, 1e10])
+def test_separatrix_from_the_bottom_keeps_its_digits(omega0):
+    # solve(0, 2 omega0) is exactly the separatrix. theta(1e-10) was off by 8e-8 relative
+    # (1 - exp cancelled), theta(1e-17) was 0, theta'(372) was off by 13% and 0 for t in
+    # 373..708 (exp(-2 t) underflowed, though 2 sech t is normal). Reference: the closed
+    # form (28), theta = 2 gd(w0 t) = 2 atan(sinh(w0 t)), theta' = 2 w0 sech(w0 t) (it
+    # solves theta'' = -w0^2 sin theta with theta(0) = 0, theta'(0) = 2 w0), by mpmath
+    # at the exact product of the doubles w0 and t.
+    ctx = _ctx(50)
+    y = np.array([1e-300, 1e-17, 1e-12, 1e-10, 1e-5, 0.5, 3.0, 20.0, 372.0, 373.0, 400.0,
+                  700.0, 708.0, -1e-12, -500.0, -1e-200])
+    t = y / omega0
+    with np.errstate(all="raise"):
+        m = ep.solve(0.0, 2 * omega0, omega0)
+        theta, dtheta = m.state(t)
+    assert m.regime is ep.Regime.SEPARATRIX
+    x = [ctx.mpf(omega0) * ctx.mpf(float(a)) for a in t]
+    ref_theta = np.array([float(2 * ctx.atan(ctx.sinh(a))) for a in x])
+    ref_dtheta = np.array([float(2 * ctx.mpf(omega0) * ctx.sech(a)) for a in x])
+    assert np.all(np.abs(theta - ref_theta) <= 2 * np.spacing(np.abs(ref_theta)))
+    assert np.all(np.abs(dtheta - ref_dtheta) <= 4 * np.spacing(np.abs(ref_dtheta)))

@@ -238,11 +238,19 @@ def _separatrix(p: Params, t: np.ndarray):
     sin(theta/2) ~ s + sigma tanh y and cos(theta/2) ~ c sech y, over 1 + sigma s tanh y
     (positive; formed as (1 - tanh|y|) + tanh|y| (1 - |s|) where the terms would cancel).
     """
-    with np.errstate(over="ignore"):  # w0 t = +-inf still means theta = +-pi
-        y = p.omega0 * t
-        e = np.exp(-2.0 * np.abs(y))
-    th = np.sign(y) * (1.0 - e) / (1.0 + e)           # tanh y
-    sech = 2.0 * np.sqrt(e) / (1.0 + e)
+    with np.errstate(over="ignore", invalid="ignore"):  # w0 t = +-inf: theta = +-pi
+        # y = w0 t exactly as y + y_lo (where Dekker's split does not overflow): rounding
+        # y alone would cost sech y, whose relative slope is tanh y, |y| ulp of y.
+        y, y_lo = _two_prod(p.omega0, t)
+        y_lo = np.where(np.isfinite(y_lo), y_lo, 0.0)
+        # expm1, not 1 - exp, keeps tanh y to its last digits near y = 0 (it lost all of
+        # them below 1e-17); and sech y = 2 h / (1 + h^2) with h = exp(-|y|), not
+        # sqrt(exp(-2 |y|)), stays normal up to |y| = 708 (the square underflowed at 372).
+        m = np.expm1(-2.0 * np.abs(y))                # e - 1, e = exp(-2 |y|)
+        h = np.exp(-np.abs(y)) * (1.0 - np.sign(y) * y_lo)  # exp(-|y + y_lo|)
+    e = h * h
+    th = np.sign(y) * (-m / (2.0 + m))                # tanh y = (1 - e) / (1 + e)
+    sech = 2.0 * h / (1.0 + e)
     one_minus = 2.0 * e / (1.0 + e)                   # 1 - tanh|y|
     ss = p.sigma * p.s
     denominator = np.where(ss * th >= 0, 1.0 + ss * th,
