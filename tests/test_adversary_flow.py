@@ -187,3 +187,33 @@ def test_separatrix_from_the_bottom_keeps_its_digits(omega0):
     ref_dtheta = np.array([float(2 * ctx.mpf(omega0) * ctx.sech(a)) for a in x])
     assert np.all(np.abs(theta - ref_theta) <= 2 * np.spacing(np.abs(ref_theta)))
     assert np.all(np.abs(dtheta - ref_dtheta) <= 4 * np.spacing(np.abs(ref_dtheta)))
+
+
+@pytest.mark.parametrize("m", [1, -1, 2, 3, -7, 100001, 160000, 10**6, -3 * 10**9])
+def test_nearest_double_to_an_even_multiple_of_pi_is_the_bottom(m):
+    # 2 * math.pi was taken as the double it is, 2.4e-16 short of 2 pi: a swing (regime II)
+    # of that amplitude. Like the doubles nearest odd multiples (the top), it now means the
+    # multiple: at rest at the bottom, regime I, c1 = -2 w0^2, theta(t) = theta0. Reference:
+    # the double nearest 2 pi m from mpmath, and for a push w the closed form (25) about the
+    # bottom, theta = 2 pi m + 2 asin(k sn(w0 t, k)), k = theta0' / (2 w0) (c2 = 0).
+    ctx = _ctx(60)
+    theta0 = float(2 * ctx.pi * m)
+    omega0 = 1.5
+    for one in (ep.solve(theta0, 0.0, omega0), ep.solve(np.array([theta0]), 0.0, omega0)[0]):
+        assert one.regime is ep.Regime.REST
+        assert one.energy_constant == -2 * omega0 ** 2
+        assert one.theta(7.25) == theta0 and one.dtheta(7.25) == 0.0
+        assert one.period == 2 * math.pi / omega0
+    if m == 1:
+        assert math.radians(360) == theta0 and ep.solve(math.radians(360)).regime is ep.Regime.REST
+    push = 0.3
+    k = ctx.mpf(push) / (2 * ctx.mpf(omega0))
+    times = np.array([0.0, 0.4, 1.7, 5.0, -3.3])
+    expected = np.array([float(2 * ctx.pi * m + 2 * ctx.asin(
+        k * ctx.ellipfun("sn", ctx.mpf(omega0) * ctx.mpf(t), m=k * k))) for t in times])
+    swing = ep.solve(theta0, push, omega0)
+    assert swing.regime is ep.Regime.LIBRATION
+    got = swing.theta(times)
+    assert np.all(np.abs(got - expected) <= 4 * math.ulp(abs(theta0) + 0.1))
+    assert [swing.theta(float(t)) for t in times] == got.tolist()
+    assert ep.solve([theta0], push, omega0).theta(times[:, None])[:, 0].tolist() == got.tolist()

@@ -201,6 +201,8 @@ def _half_angle(th):
     c = (sh, sl) if top else (ch, cl)
     p, e = two_prod(m, _TWO_PI[0])
     turns = p + (e + m * _TWO_PI[1])
+    if m != 0 and th == turns:  # the double nearest 2 pi m: the bottom exactly
+        s, c = (0.0, 0.0), (1.0, 0.0)
     odd = 2.0 * math.floor(0.5 * (th / PI_HI + 1.0)) - 1.0
     odd = 1.0 if odd == 0 else odd
     p, e = two_prod(odd, PI_HI)

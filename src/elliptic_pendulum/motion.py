@@ -221,7 +221,8 @@ def solve(theta0: ArrayLike, dtheta0: ArrayLike = 0.0, omega0: ArrayLike = 1.0) 
     theta0 : float or array_like
         Initial angle in radians from the downward vertical; any real value
         (2 pi m is carried along). ``math.pi`` (the double nearest any odd
-        multiple of pi) means exactly upside down.
+        multiple of pi) means exactly upside down; ``2 * math.pi`` (the double
+        nearest any nonzero even multiple) exactly at the bottom.
     dtheta0 : float or array_like, default 0.0
         Initial angular velocity in rad per unit time; either sign.
     omega0 : float or array_like, default 1.0
