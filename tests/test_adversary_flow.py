@@ -217,3 +217,28 @@ def test_nearest_double_to_an_even_multiple_of_pi_is_the_bottom(m):
     assert np.all(np.abs(got - expected) <= 4 * math.ulp(abs(theta0) + 0.1))
     assert [swing.theta(float(t)) for t in times] == got.tolist()
     assert ep.solve([theta0], push, omega0).theta(times[:, None])[:, 0].tolist() == got.tolist()
+
+
+def test_sign_of_zero_is_the_same_on_both_paths():
+    # solve(1e-300, 0, 4.909e-91).dtheta(6.11e89) was -0.0 on the scalar path and +0.0 in an
+    # array (the true value, -theta0 w0 sin(w0 t) ~ -1.4e-391, rounds to -0.0); and
+    # solve(-0.0).theta(t), which is theta0 = -0.0, came back +0.0 from an array call.
+    # Reference for the first: the small-angle closed form (its sign is that of -sin(0.3)).
+    m = ep.solve(1e-300, 0.0, 4.909e-91)
+    assert math.copysign(1.0, m.dtheta(6.11e89)) == -1.0
+    assert math.copysign(1.0, float(m.dtheta(np.array([6.11e89]))[0])) == -1.0
+    assert math.copysign(1.0, float(ep.solve(-0.0).theta(np.array([1.0]))[0])) == -1.0
+    rng = np.random.default_rng(3)
+    n = 400
+    theta0 = rng.choice([-1, 1], n) * 10.0 ** rng.uniform(-300, 0.4, n)
+    theta0[::5] = rng.choice([0.0, -0.0, 2 * math.pi, -4 * math.pi], theta0[::5].size)
+    dtheta0 = rng.choice([-1, 1], n) * 10.0 ** rng.uniform(-300, 0.5, n)
+    dtheta0[::3] = rng.choice([0.0, -0.0], dtheta0[::3].size)
+    omega0 = 10.0 ** rng.uniform(-90, 90, n)
+    t = rng.choice([-1, 1], n) * 10.0 ** rng.uniform(-300, 0, n) * 30 / (omega0 + abs(dtheta0))
+    t[::7] = rng.choice([0.0, -0.0], t[::7].size)
+    many = ep.solve(theta0, dtheta0, omega0).state(t)
+    for i in range(n):
+        one = ep.solve(float(theta0[i]), float(dtheta0[i]), float(omega0[i]))
+        for batch, alone in zip(many, one.state(float(t[i])), strict=True):
+            assert batch[i].tobytes() == np.float64(alone).tobytes()

@@ -274,8 +274,10 @@ def _evaluate(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool):
     size = math.prod(shape)
     if size <= CHUNK:
         theta, dtheta = _kernel(p, t, want_theta, want_dtheta)
-        return (np.broadcast_to(theta, shape) + 0.0 if want_theta else None,
-                np.broadcast_to(dtheta, shape) + 0.0 if want_dtheta else None)
+        # Fresh arrays of the full shape; np.array, not + 0.0, which turns -0.0 into +0.0
+        # (the scalar path, and theta0 = -0.0 at rest, keep the sign).
+        return (np.array(np.broadcast_to(theta, shape)) if want_theta else None,
+                np.array(np.broadcast_to(dtheta, shape)) if want_dtheta else None)
     nd = len(shape)
     pieces = [np.reshape(x, (1,) * (nd - np.ndim(x)) + np.shape(x)) for x in _pieces(p)]
     t = np.reshape(t, (1,) * (nd - t.ndim) + t.shape)
