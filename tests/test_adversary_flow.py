@@ -242,3 +242,14 @@ def test_sign_of_zero_is_the_same_on_both_paths():
         one = ep.solve(float(theta0[i]), float(dtheta0[i]), float(omega0[i]))
         for batch, alone in zip(many, one.state(float(t[i])), strict=True):
             assert batch[i].tobytes() == np.float64(alone).tobytes()
+
+
+def test_a_time_that_does_not_broadcast_is_named():
+    # numpy's own message ("shape mismatch: objects cannot be broadcast...") named neither t
+    # nor the shapes as the caller knows them.
+    m = ep.solve([0.1, 0.2])
+    for call in (m.theta, m.dtheta, m.state):
+        with pytest.raises(ValueError, match=r"t must broadcast .* shape \(3,\) .* \(2,\)"):
+            call(np.zeros(3))
+    assert m.theta(np.zeros((3, 1))).shape == (3, 2)  # what does broadcast still does
+

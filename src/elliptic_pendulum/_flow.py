@@ -270,7 +270,11 @@ def evaluate(p: Params, t: np.ndarray, want_theta: bool = True, want_dtheta: boo
 
 
 def _evaluate(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool):
-    shape = np.broadcast_shapes(np.shape(p.code), t.shape)
+    try:
+        shape = np.broadcast_shapes(np.shape(p.code), t.shape)
+    except ValueError:
+        raise ValueError(f"t must broadcast against the states (numpy rules): got t of shape "
+                         f"{t.shape} for states of shape {np.shape(p.code)}") from None
     size = math.prod(shape)
     if size <= CHUNK:
         theta, dtheta = _kernel(p, t, want_theta, want_dtheta)
