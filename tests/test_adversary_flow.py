@@ -253,3 +253,11 @@ def test_a_time_that_does_not_broadcast_is_named():
             call(np.zeros(3))
     assert m.theta(np.zeros((3, 1))).shape == (3, 2)  # what does broadcast still does
 
+
+def test_truth_of_a_motion():
+    # bool(solve(1.0)) raised TypeError (Python fell back on len, which a single state lacks).
+    # Expected: a single state is true, an array of states is true when len(m) != 0 (the
+    # rule of Python's sequences).
+    assert bool(ep.solve(1.0)) and bool(ep.solve(np.array(1.0)))
+    assert bool(ep.solve([1.0, 2.0])) and bool(ep.solve(np.zeros((1, 0))))
+    assert not ep.solve(np.zeros(0)) and not ep.solve(np.zeros((0, 3)))

@@ -186,6 +186,15 @@ class Motion:
         """Return a small HTML table for Jupyter: regime, c1, amplitude or gamma, period."""
         return _display.html(self)
 
+    def __bool__(self) -> bool:
+        """Return True for a single state; for an array of states, ``len(m) != 0``.
+
+        A Motion is an object, not a truth value: one state is always true (``len`` of it
+        raises TypeError, which ``bool`` would otherwise pass on), and an array of states
+        is true as a Python sequence is, when its first axis is not empty.
+        """
+        return self.shape == () or self.shape[0] != 0
+
     def __len__(self) -> int:
         """Return the number of states along the first axis of S."""
         if self.shape == ():
