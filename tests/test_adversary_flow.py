@@ -261,3 +261,30 @@ def test_truth_of_a_motion():
     assert bool(ep.solve(1.0)) and bool(ep.solve(np.array(1.0)))
     assert bool(ep.solve([1.0, 2.0])) and bool(ep.solve(np.zeros((1, 0))))
     assert not ep.solve(np.zeros(0)) and not ep.solve(np.zeros((0, 3)))
+
+
+def test_pendulum_quantities_broadcast_over_an_array_motion():
+    # Pendulum.position, tension and energy raised TypeError ("only 0-dimensional arrays can
+    # be converted to Python scalars") for a Motion of many states. Reference: (1), (4) and
+    # (10) evaluated here from theta and theta' of the states taken one at a time.
+    p = ep.Pendulum(length=1.5, g=9.0, mass=2.0)
+    theta0 = np.array([0.3, 2.0, -1.0])
+    dtheta0 = np.array([0.0, 0.5, 6.0])
+    many = p.solve(theta0[:, None], dtheta0[:, None])
+    t = np.array([0.0, 0.7, 3.1, 10.0])
+    x, y = p.position(many, t)
+    tension = p.tension(many, t)
+    energy = p.energy(many)
+    assert x.shape == y.shape == tension.shape == (3, 4) and energy.shape == (3, 1)
+    for i in range(3):
+        one = p.solve(float(theta0[i]), float(dtheta0[i]))
+        theta, dtheta = one.theta(t), one.dtheta(t)
+        np.testing.assert_array_equal(x[i], p.length * np.sin(theta))
+        np.testing.assert_array_equal(y[i], -p.length * np.cos(theta))
+        np.testing.assert_array_equal(
+            tension[i], p.mass * (p.length * dtheta ** 2 + p.g * np.cos(theta)))
+        c1 = float(dtheta0[i]) ** 2 - 2 * p.omega0 ** 2 * math.cos(float(theta0[i]))
+        assert energy[i, 0] == pytest.approx(0.5 * p.mass * p.length ** 2 * c1, rel=1e-14)
+    other = ep.solve([0.3, 0.4], 0.0, [p.omega0, 2.0])
+    with pytest.raises(ValueError, match="omega0=2.0"):
+        p.energy(other)
