@@ -288,3 +288,24 @@ def test_pendulum_quantities_broadcast_over_an_array_motion():
     other = ep.solve([0.3, 0.4], 0.0, [p.omega0, 2.0])
     with pytest.raises(ValueError, match="omega0=2.0"):
         p.energy(other)
+
+
+def test_a_batch_accepts_every_time_its_states_accept_alone():
+    # A state at rest or on the separatrix accepts any finite t alone, but beside a swing
+    # the range check of the elliptic argument (|omega0 t| < 1e290) refused the whole call.
+    # References: balanced at the top, theta = pi for ever; the separatrix (0, 2) is 2 gd(t) (the note's
+    # (28)), pi and 0 for t = 1e300; the swing from (1, 0) is 2 asin(k sn(t + K, k)) with
+    # k = sin(1/2) (the note's (25), c2 = K), by mpmath.
+    ctx = _ctx(50)
+    with np.errstate(all="raise"):
+        theta, dtheta = ep.solve([math.pi, 0.0, 1.0], [0.0, 2.0, 0.0]).state(
+            [1e300, -1e308, 1.0])
+        alone = [ep.solve(math.pi).state(1e300), ep.solve(0.0, 2.0).state(-1e308),
+                 ep.solve(1.0).state(1.0)]
+    assert np.array_equal(np.array(alone).T, [theta, dtheta])
+    k = ctx.sin(ctx.mpf(0.5))
+    swing = float(2 * ctx.asin(k * ctx.ellipfun("sn", 1 + ctx.ellipk(k * k), m=k * k)))
+    assert theta[:2].tolist() == [math.pi, -math.pi] and dtheta[:2].tolist() == [0.0, 0.0]
+    assert abs(theta[2] - swing) <= 2 * math.ulp(1.0)
+    with pytest.raises(ValueError, match="t is too large"):
+        ep.solve([0.0, 1.0]).theta([1e300, 1e300])

@@ -64,13 +64,19 @@ def _unpieces(pieces: list[Any], levels: int) -> Params:
 def _kernel(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool):
     lib, rot = p.code == LIBRATION, p.code == ROTATION
     theta = dtheta = None
+    t_all = t
     if np.any(lib | rot):
         with np.errstate(over="ignore"):  # an overflow here is exactly what is reported
             # Beyond 1e290, Dekker's split in the exact product overflows.
-            fine = np.all((np.abs(t) <= 1e290) & (np.abs(t) * p.rate <= 1e290))
-        if not fine:
-            raise ValueError("t is too large: |omega0 t| must stay below about 1e290 "
-                             "(the elliptic argument grows like omega0 t)")
+            big = (np.abs(t) > 1e290) | (np.abs(t) * p.rate > 1e290)
+        if np.any(big):
+            if np.any(big & (lib | rot)):
+                raise ValueError("t is too large: |omega0 t| must stay below about 1e290 "
+                                 "(the elliptic argument grows like omega0 t)")
+            # Only states at rest or on the separatrix, whose values come from elsewhere:
+            # they take t = 0 here, so that a batch refuses (or overflows) no t that each
+            # of its states accepts alone.
+            t = np.where(big, 0.0, t)
         # tau = rate t as a double-double (rate is known to 1e-32): the phase survives
         # thousands of periods. The argument is u = u0 + tau with sn, cn, dn of u0 known
         # exactly from the initial state, joined to those of tau by the addition theorem:
@@ -115,10 +121,10 @@ def _kernel(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool):
     sep = (p.code == SEPARATRIX) & ~p.still
     if np.any(sep):
         with np.errstate(invalid="ignore", divide="ignore"):  # as above, for other regimes
-            th_s, dth_s = _separatrix(_alone(p, sep, 0.0, 1.0, 1.0), t)
+            th_s, dth_s = _separatrix(_alone(p, sep, 0.0, 1.0, 1.0), t_all)
         theta = th_s if theta is None else np.where(sep, th_s, theta)
         dtheta = dth_s if dtheta is None else np.where(sep, dth_s, dtheta)
-    shape = np.broadcast_shapes(np.shape(t), np.shape(p.code))
+    shape = np.broadcast_shapes(np.shape(t_all), np.shape(p.code))
     theta = np.zeros(shape) if theta is None else theta
     dtheta = np.zeros(shape) if dtheta is None else dtheta
     if np.any(p.still):
