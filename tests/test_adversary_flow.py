@@ -293,9 +293,9 @@ def test_pendulum_quantities_broadcast_over_an_array_motion():
 def test_a_batch_accepts_every_time_its_states_accept_alone():
     # A state at rest or on the separatrix accepts any finite t alone, but beside a swing
     # the range check of the elliptic argument (|omega0 t| < 1e290) refused the whole call.
-    # References: balanced at the top, theta = pi for ever; the separatrix (0, 2) is 2 gd(t) (the note's
-    # (28)), pi and 0 for t = 1e300; the swing from (1, 0) is 2 asin(k sn(t + K, k)) with
-    # k = sin(1/2) (the note's (25), c2 = K), by mpmath.
+    # References: balanced at the top, theta = pi for ever; the separatrix (0, 2) is
+    # 2 gd(t) (the note's (28)), -pi and 0 for t = -1e308; the swing from (1, 0) is
+    # 2 asin(k sn(t + K, k)) with k = sin(1/2) (the note's (25), c2 = K), by mpmath.
     ctx = _ctx(50)
     with np.errstate(all="raise"):
         theta, dtheta = ep.solve([math.pi, 0.0, 1.0], [0.0, 2.0, 0.0]).state(
