@@ -99,9 +99,6 @@ def test_cli_odd_multiples_of_180_degrees_are_the_top(capsys, degrees):
     assert lines[0] == "# regime III (separatrix), period infinite"
 
 
-@pytest.mark.xfail(strict=True, reason="the library classifies the double nearest 2 pi n as a "
-                   "swing of amplitude ~2e-16 rad; the fix in regimes/_states is on another "
-                   "branch")
 @pytest.mark.parametrize("degrees", ["360", "720", "1080", "-360"])
 def test_cli_even_multiples_of_180_degrees_are_the_bottom(capsys, degrees):
     # Released at rest hanging straight down, as for 0 degrees: regime I (rest), whatever the

@@ -196,13 +196,14 @@ def test_rest_at_the_bottom(theta0):
     assert ep.solve(0.0).theta(5.0) == 0.0
 
 
-def test_two_pi_as_a_double_is_not_rest():
-    # 2 * math.pi is 2.4e-16 below 2 pi: regimes.py takes every angle but math.pi exactly,
-    # so this is a libration of amplitude 2.4e-16 about 2 pi (the note's (25) again).
+def test_two_pi_as_a_double_is_rest_at_the_bottom():
+    # 2 * math.pi is the double nearest 2 pi (2.4e-16 below it): like the doubles nearest odd
+    # multiples of pi (the top), regimes.py takes it to mean 2 pi, the bottom, at rest.
+    assert 2 * math.pi == float(2 * mpmath.pi)
     m = ep.solve(2 * math.pi)
-    assert m.regime is Regime.LIBRATION
-    assert m.amplitude == pytest.approx(2 * math.pi - float(2 * mpmath.pi), rel=1e-6)
-    assert abs(m.theta(123.4) - 2 * math.pi) <= 1e-15
+    assert m.regime is Regime.REST
+    assert m.amplitude == 0.0
+    assert m.theta(123.4) == 2 * math.pi
 
 
 # --- periods ---------------------------------------------------------------------------------

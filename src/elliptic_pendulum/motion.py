@@ -44,7 +44,8 @@ class Motion:
     A Motion holds one state (its attributes are Python floats) or an array of states of
     shape ``S`` (its attributes are arrays of that shape; ``regime`` an array of
     :class:`~elliptic_pendulum.regimes.Regime`). ``m[i]``, ``len(m)`` and iteration give
-    the Motions of single states.
+    the Motions of single states. Its arrays are its own (copies of the initial states)
+    and read-only: a Motion does not change when the caller's arrays do.
 
     Attributes
     ----------
@@ -188,6 +189,15 @@ class Motion:
         """Return a small HTML table for Jupyter: regime, c1, amplitude or gamma, period."""
         return _display.html(self)
 
+    def __bool__(self) -> bool:
+        """Return True for a single state; for an array of states, ``len(m) != 0``.
+
+        A Motion is an object, not a truth value: one state is always true (``len`` of it
+        raises TypeError, which ``bool`` would otherwise pass on), and an array of states
+        is true as a Python sequence is, when its first axis is not empty.
+        """
+        return self.shape == () or self.shape[0] != 0
+
     def __len__(self) -> int:
         """Return the number of states along the first axis of S."""
         if self.shape == ():
@@ -201,7 +211,7 @@ class Motion:
         values = (self.regime, self.theta0, self.dtheta0, self.omega0, self.energy_constant,
                   self.modulus, self.complementary_modulus, self.amplitude, self.phase,
                   self.direction, self.period, self._beta)
-        return Motion(*_states.pick(values, self._p, self.shape, index))
+        return Motion(*_frozen(_states.pick(values, self._p, self.shape, index)))
 
     def __iter__(self) -> Iterator[Motion]:
         """Yield the Motions of the states along the first axis of S."""
@@ -223,7 +233,8 @@ def solve(theta0: ArrayLike, dtheta0: ArrayLike = 0.0, omega0: ArrayLike = 1.0) 
     theta0 : float or array_like
         Initial angle in radians from the downward vertical; any real value
         (2 pi m is carried along). ``math.pi`` (the double nearest any odd
-        multiple of pi) means exactly upside down.
+        multiple of pi) means exactly upside down; ``2 * math.pi`` (the double
+        nearest any nonzero even multiple) exactly at the bottom.
     dtheta0 : float or array_like, default 0.0
         Initial angular velocity in rad per unit time; either sign.
     omega0 : float or array_like, default 1.0
@@ -298,8 +309,20 @@ def solve(theta0: ArrayLike, dtheta0: ArrayLike = 0.0, omega0: ArrayLike = 1.0) 
     except ValueError:
         raise ValueError(f"theta0, dtheta0 and omega0 must broadcast together (numpy rules); "
                          f"got shapes {th.shape}, {v.shape}, {w0.shape}") from None
-    public, p = _states.solve(*(np.broadcast_to(x, shape) for x in (th, v, w0)))
+    # Copies (np.asarray and broadcast_to may alias the caller's arrays), made read-only
+    # below with everything else: a Motion must not change when its caller's arrays do.
+    public, p = _states.solve(*(np.array(np.broadcast_to(x, shape)) for x in (th, v, w0)))
     regime = np.empty(shape, dtype=object)
     for number, member in enumerate(REGIMES):
         regime[p.code == number] = member
-    return Motion(*_states.plain([regime, *public], p))
+    return Motion(*_frozen(_states.plain([regime, *public], p)))
+
+
+def _frozen(fields: Any) -> Any:
+    """Return ``fields`` with every array in it (nested in tuples too) made read-only."""
+    if isinstance(fields, np.ndarray):
+        fields.flags.writeable = False
+    elif isinstance(fields, (tuple, list)):
+        for x in fields:
+            _frozen(x)
+    return fields

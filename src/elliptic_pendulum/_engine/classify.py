@@ -19,7 +19,10 @@ regime IV has gamma = 1/k, and beta = 2 k^2 - 1 (29).
 
 The double nearest an odd multiple of pi (``math.pi``, ``3 * math.pi``, ...) is
 taken to mean that multiple, so that ``solve(math.pi)`` is the pendulum balanced
-upside down; every other angle is taken exactly as the double it is.
+upside down; likewise the double nearest a nonzero even multiple (``2 * math.pi``,
+``math.radians(360)``, ``-4 * math.pi``, ...) means that multiple, the bottom, so that
+``solve(2 * math.pi)`` is at rest (regime I). Every other angle is taken exactly as the
+double it is.
 
 No global state: states far outside the usual range (angles beyond 2**20 rad, or
 theta'/(2 omega0) beyond 2**(+-300) in size) go through a private mpmath context made
@@ -105,6 +108,13 @@ def _half_angle(th):
     c = (np.where(top, sh, ch), np.where(top, sl, cl))
     p, e = _dd.two_prod(m, _TWO_PI[0])
     turns = p + (e + m * _TWO_PI[1])
+    # The double nearest a nonzero even multiple 2 pi m (2 * math.pi, -4 * math.pi, ...)
+    # means that multiple, the bottom, as the doubles nearest odd multiples mean the top:
+    # r = 0, s = 0, c = 1 (at rest there: regime I, theta = theta0 for ever).
+    even = (m != 0) & (th == turns)
+    if np.any(even):
+        s = (np.where(even, 0.0, s[0]), np.where(even, 0.0, s[1]))
+        c = (np.where(even, 1.0, c[0]), np.where(even, 0.0, c[1]))
     odd, n = _odd_pi(th)
     if np.any(odd):  # exactly upside down: r = +-pi (sign of theta0), s = +-1, c = 0
         up = np.where(th > 0, 1.0, -1.0)

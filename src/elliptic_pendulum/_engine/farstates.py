@@ -36,6 +36,8 @@ def classify(theta0: float, dtheta0: float, omega0: float) -> tuple:
         up = 1 if theta0 > 0 else -1
         m = (odd - up) / 2
         s, c = ctx.mpf(up), ctx.mpf(0)
+    elif m != 0 and abs(theta0) < 2.0**50 and float(2 * ctx.pi * m) == theta0:
+        s, c = ctx.mpf(0), ctx.mpf(1)  # the double nearest an even multiple: the bottom
     else:
         r = ctx.mpf(theta0) - 2 * ctx.pi * m
         s, c = ctx.sin(r / 2), ctx.cos(r / 2)

@@ -23,6 +23,8 @@ from .landen import _PI_HI, _PI_LO, _two_prod, _two_sum
 __all__ = ["Params", "evaluate", "CHUNK"]
 
 CHUNK = 2 ** 15
+# Below this d0 = dn(u0) (IV), the addition theorem is rescaled (see _rotation).
+_DEEP = 2.0 ** -300
 
 
 class Params(NamedTuple):
@@ -62,13 +64,19 @@ def _unpieces(pieces: list[Any], levels: int) -> Params:
 def _kernel(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool):
     lib, rot = p.code == LIBRATION, p.code == ROTATION
     theta = dtheta = None
+    t_all = t
     if np.any(lib | rot):
         with np.errstate(over="ignore"):  # an overflow here is exactly what is reported
             # Beyond 1e290, Dekker's split in the exact product overflows.
-            fine = np.all((np.abs(t) <= 1e290) & (np.abs(t) * p.rate <= 1e290))
-        if not fine:
-            raise ValueError("t is too large: |omega0 t| must stay below about 1e290 "
-                             "(the elliptic argument grows like omega0 t)")
+            big = (np.abs(t) > 1e290) | (np.abs(t) * p.rate > 1e290)
+        if np.any(big):
+            if np.any(big & (lib | rot)):
+                raise ValueError("t is too large: |omega0 t| must stay below about 1e290 "
+                                 "(the elliptic argument grows like omega0 t)")
+            # Only states at rest or on the separatrix, whose values come from elsewhere:
+            # they take t = 0 here, so that a batch refuses (or overflows) no t that each
+            # of its states accepts alone.
+            t = np.where(big, 0.0, t)
         # tau = rate t as a double-double (rate is known to 1e-32): the phase survives
         # thousands of periods. The argument is u = u0 + tau with sn, cn, dn of u0 known
         # exactly from the initial state, joined to those of tau by the addition theorem:
@@ -82,11 +90,14 @@ def _kernel(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool):
         rot_yx: Any
         # Each formula runs over the whole chunk and np.where keeps it where its regime is:
         # elsewhere (a state at rest, say) it may divide 0 by 0, harmlessly.
+        # The other regimes' states enter each formula as a harmless stand-in, so that no
+        # element overflows for its companions (a tiny swing with a huge omega0 would in
+        # the formula of IV): each element signals what it signals alone.
         with np.errstate(invalid="ignore", divide="ignore"):
-            lib_yx, dtheta = (_libration(p, sn, cn, dn, want_theta, want_dtheta) if any_lib
-                              else (None, None))
-            rot_yx, dth_r = (_rotation(p, sn, cn, dn, want_theta, want_dtheta) if any_rot
-                             else (None, None))
+            lib_yx, dtheta = (_libration(_alone(p, lib, 0.0, 1.0, 0.0), sn, cn, dn,
+                                         want_theta, want_dtheta) if any_lib else (None, None))
+            rot_yx, dth_r = (_rotation(_alone(p, rot, 0.0, 1.0, 1.0), sn, cn, dn,
+                                       want_theta, want_dtheta) if any_rot else (None, None))
         if any_rot and want_dtheta:
             dtheta = dth_r if dtheta is None else np.where(rot, dth_r, dtheta)
         redo = None
@@ -110,16 +121,25 @@ def _kernel(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool):
     sep = (p.code == SEPARATRIX) & ~p.still
     if np.any(sep):
         with np.errstate(invalid="ignore", divide="ignore"):  # as above, for other regimes
-            th_s, dth_s = _separatrix(p, t)
+            th_s, dth_s = _separatrix(_alone(p, sep, 0.0, 1.0, 1.0), t_all)
         theta = th_s if theta is None else np.where(sep, th_s, theta)
         dtheta = dth_s if dtheta is None else np.where(sep, dth_s, dtheta)
-    shape = np.broadcast_shapes(np.shape(t), np.shape(p.code))
+    shape = np.broadcast_shapes(np.shape(t_all), np.shape(p.code))
     theta = np.zeros(shape) if theta is None else theta
     dtheta = np.zeros(shape) if dtheta is None else dtheta
     if np.any(p.still):
         theta = np.where(p.still, p.theta0, theta)
         dtheta = np.where(p.still, 0.0, dtheta)
     return theta, dtheta
+
+
+def _alone(p: Params, keep, s: float, c: float, w: float) -> Params:
+    """Return p with the states outside ``keep`` replaced by (s, c, w, k = 1, sigma = 1)."""
+    if np.all(keep):
+        return p
+    return p._replace(s=np.where(keep, p.s, s), c=np.where(keep, p.c, c),
+                      w=np.where(keep, p.w, w), k=np.where(keep, p.k, 1.0),
+                      sigma=np.where(keep, p.sigma, 1.0))
 
 
 def _libration(p: Params, sn, cn, dn, want_theta: bool, want_dtheta: bool):
@@ -149,17 +169,28 @@ def _rotation(p: Params, sn, cn, dn, want_theta: bool, want_dtheta: bool):
     """
     s, c, w, k, sigma = p.s, p.c, p.w, p.k, p.sigma
     aw = np.abs(w)
+    d0 = aw / k
+    # Both pairs below share the factor (s^2 cn^2 + w^2) / k^2 >= d0^2, which leaves the
+    # normal doubles when a tiny push leaves the top (d0 < 1e-154; theta went round once
+    # too few, theta' was 0 / 0). Below d0 = 2**-300, c, d0 and one factor cn are multiplied
+    # by lam = 2**-e ~ 1/d0 (exact): the factor is then >= d0 / 2 >= 5e-301, and the
+    # products that still underflow are below its ulp. Elsewhere lam = 1: the same bits.
+    c_l, d0_l, cn_l = c, d0, cn
+    deep = d0 < _DEEP
+    if np.any(deep):
+        lam = np.where(deep, np.ldexp(1.0, -np.frexp(d0)[1]), 1.0)
+        c_l, d0_l, cn_l = lam * c, lam * d0, lam * cn
     yx = dtheta = None
     if want_theta:
-        d0 = aw / k
         d0m1 = -(s / k) * (s / (aw + k))
-        spread = cn * cn + d0 * sn * sn
-        yx = (sigma * s * dn * spread + c * sn * cn * d0m1,
-              c * spread - sigma * s * sn * cn * dn * d0m1)
+        spread = cn * cn_l + d0_l * sn * sn
+        yx = (sigma * s * dn * spread + c_l * sn * cn * d0m1,
+              c * spread - sigma * s * sn * cn_l * dn * d0m1)
     if want_dtheta:                        # theta' = +-2 (w0 / gamma) dn(u)
         # divided through by k^2, which may be huge when omega0 is tiny
-        d0, s_k = aw / k, s / k
-        dn_u = (d0 * dn - sigma * s_k * (c / k) * sn * cn) / (d0 * d0 + s_k * s_k * cn * cn)
+        s_k = s / k
+        dn_u = ((d0_l * dn - sigma * s_k * (c_l / k) * sn * cn)
+                / (d0_l * d0 + s_k * s_k * cn * cn_l))
         dtheta = sigma * 2.0 * p.rate * dn_u
     return yx, dtheta
 
@@ -213,11 +244,19 @@ def _separatrix(p: Params, t: np.ndarray):
     sin(theta/2) ~ s + sigma tanh y and cos(theta/2) ~ c sech y, over 1 + sigma s tanh y
     (positive; formed as (1 - tanh|y|) + tanh|y| (1 - |s|) where the terms would cancel).
     """
-    with np.errstate(over="ignore"):  # w0 t = +-inf still means theta = +-pi
-        y = p.omega0 * t
-        e = np.exp(-2.0 * np.abs(y))
-    th = np.sign(y) * (1.0 - e) / (1.0 + e)           # tanh y
-    sech = 2.0 * np.sqrt(e) / (1.0 + e)
+    with np.errstate(over="ignore", invalid="ignore"):  # w0 t = +-inf: theta = +-pi
+        # y = w0 t exactly as y + y_lo (where Dekker's split does not overflow): rounding
+        # y alone would cost sech y, whose relative slope is tanh y, |y| ulp of y.
+        y, y_lo = _two_prod(p.omega0, t)
+        y_lo = np.where(np.isfinite(y_lo), y_lo, 0.0)
+        # expm1, not 1 - exp, keeps tanh y to its last digits near y = 0 (it lost all of
+        # them below 1e-17); and sech y = 2 h / (1 + h^2) with h = exp(-|y|), not
+        # sqrt(exp(-2 |y|)), stays normal up to |y| = 708 (the square underflowed at 372).
+        m = np.expm1(-2.0 * np.abs(y))                # e - 1, e = exp(-2 |y|)
+        h = np.exp(-np.abs(y)) * (1.0 - np.sign(y) * y_lo)  # exp(-|y + y_lo|)
+    e = h * h
+    th = np.sign(y) * (-m / (2.0 + m))                # tanh y = (1 - e) / (1 + e)
+    sech = 2.0 * h / (1.0 + e)
     one_minus = 2.0 * e / (1.0 + e)                   # 1 - tanh|y|
     ss = p.sigma * p.s
     denominator = np.where(ss * th >= 0, 1.0 + ss * th,
@@ -237,12 +276,18 @@ def evaluate(p: Params, t: np.ndarray, want_theta: bool = True, want_dtheta: boo
 
 
 def _evaluate(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool):
-    shape = np.broadcast_shapes(np.shape(p.code), t.shape)
+    try:
+        shape = np.broadcast_shapes(np.shape(p.code), t.shape)
+    except ValueError:
+        raise ValueError(f"t must broadcast against the states (numpy rules): got t of shape "
+                         f"{t.shape} for states of shape {np.shape(p.code)}") from None
     size = math.prod(shape)
     if size <= CHUNK:
         theta, dtheta = _kernel(p, t, want_theta, want_dtheta)
-        return (np.broadcast_to(theta, shape) + 0.0 if want_theta else None,
-                np.broadcast_to(dtheta, shape) + 0.0 if want_dtheta else None)
+        # Fresh arrays of the full shape; np.array, not + 0.0, which turns -0.0 into +0.0
+        # (the scalar path, and theta0 = -0.0 at rest, keep the sign).
+        return (np.array(np.broadcast_to(theta, shape)) if want_theta else None,
+                np.array(np.broadcast_to(dtheta, shape)) if want_dtheta else None)
     nd = len(shape)
     pieces = [np.reshape(x, (1,) * (nd - np.ndim(x)) + np.shape(x)) for x in _pieces(p)]
     t = np.reshape(t, (1,) * (nd - t.ndim) + t.shape)

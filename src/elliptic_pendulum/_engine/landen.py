@@ -72,6 +72,8 @@ def _constants(kc: Any, kc_lo: Any = 0.0) -> Constants:
     # makes the extra steps of the recurrence exact identities (d = 1). So an element gets
     # the same bits alone or beside a slower modulus (no dependence on the batch).
     a, b = np.ones_like(kc), kc.copy()
+    # Every kc < 1 takes at least one step (`near` is tested before the step): stopped at
+    # level 0 (1 - kc <= 8e-16), the recurrence would give dn = cn = kc at v = 0 instead of 1.
     done = a == b
     mu, nu = [a], [np.where(done, a, b)]
     while not np.all(done):

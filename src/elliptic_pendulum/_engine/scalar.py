@@ -32,12 +32,20 @@ from .dd import (
     two_prod,
     two_sum,
 )
+from .flow import _DEEP
 
 __all__ = ["jacobi", "landen", "state"]
 
 
 def _f(ufunc, *args):
-    return float(ufunc(*args))
+    # Underflow to a subnormal or zero is the right answer, and the array path ignores it
+    # (np.errstate(under="ignore")); so here, whatever the caller's np.seterr or warning
+    # filters. Entering np.errstate costs a microsecond: only on the rare call that signals.
+    try:
+        return float(ufunc(*args))
+    except (FloatingPointError, RuntimeWarning):
+        with np.errstate(under="ignore"):
+            return float(ufunc(*args))
 
 
 @lru_cache(maxsize=256)
@@ -114,19 +122,24 @@ def state(p, t: float, want_theta: bool = True, want_dtheta: bool = True):
     theta = dtheta = None
     if rot:
         aw = abs(w)
+        d0 = aw / k
+        c_l, d0_l, cn_l = cs, d0, cn
+        if d0 < _DEEP:  # rescaled as in _flow._rotation
+            lam = math.ldexp(1.0, -math.frexp(d0)[1])
+            c_l, d0_l, cn_l = lam * cs, lam * d0, lam * cn
         if want_theta:
-            d0 = aw / k
             d0m1 = -(s / k) * (s / (aw + k))
-            spread = cn * cn + d0 * sn * sn
-            y = sigma * s * dn * spread + cs * sn * cn * d0m1
-            x = cs * spread - sigma * s * sn * cn * dn * d0m1
+            spread = cn * cn_l + d0_l * sn * sn
+            y = sigma * s * dn * spread + c_l * sn * cn * d0m1
+            x = cs * spread - sigma * s * sn * cn_l * dn * d0m1
             delta = _f(np.arctan2, y, x)
             quarters, rest = am
             theta, small = _turned(p, quarters, rest + delta)
             redo = abs(small) < (abs(rest) + abs(delta)) * (1.0 / 64.0)
         if want_dtheta:
-            d0, s_k = aw / k, s / k
-            dn_u = (d0 * dn - sigma * s_k * (cs / k) * sn * cn) / (d0 * d0 + s_k * s_k * cn * cn)
+            s_k = s / k
+            dn_u = ((d0_l * dn - sigma * s_k * (c_l / k) * sn * cn)
+                    / (d0_l * d0 + s_k * s_k * cn * cn_l))
             dtheta = sigma * 2.0 * p.rate * dn_u
     else:
         if want_theta:
@@ -192,6 +205,8 @@ def _half_angle(th):
     c = (sh, sl) if top else (ch, cl)
     p, e = two_prod(m, _TWO_PI[0])
     turns = p + (e + m * _TWO_PI[1])
+    if m != 0 and th == turns:  # the double nearest 2 pi m: the bottom exactly
+        s, c = (0.0, 0.0), (1.0, 0.0)
     odd = 2.0 * math.floor(0.5 * (th / PI_HI + 1.0)) - 1.0
     odd = 1.0 if odd == 0 else odd
     p, e = two_prod(odd, PI_HI)
@@ -206,7 +221,7 @@ def _half_angle(th):
 @lru_cache(maxsize=256)
 def _agm(kc: float, kc_lo: float) -> _landen.Constants:
     a, b = 1.0, kc
-    done = a == b  # as in landen._constants: one step past a, b within 1e-8
+    done = a == b  # as in landen._constants: at least one step, and one past a, b within 1e-8
     mu, nu = [a], [a if done else b]
     while not done:
         done = abs(a - b) <= 1e-8 * a

@@ -130,9 +130,16 @@ class Pendulum:
         # A Motion solved for another omega0 would give tensions and energies of a pendulum
         # that is not this one, silently: refuse it.
         omega0 = getattr(motion, "omega0", None)
-        if omega0 is not None and not math.isclose(omega0, self.omega0, rel_tol=1e-12):
+        if omega0 is None or (np.ndim(omega0) == 0
+                              and math.isclose(omega0, self.omega0, rel_tol=1e-12)):
+            return
+        # math.isclose(omega0, self.omega0, rel_tol=1e-12) for every state of an array
+        omega0 = np.asarray(omega0, dtype=float)
+        off = np.abs(omega0 - self.omega0) > 1e-12 * np.maximum(np.abs(omega0), self.omega0)
+        if np.any(off):
+            bad = float(omega0[off][0]) if omega0.ndim else float(omega0)
             raise ValueError(
-                f"motion was solved with omega0={omega0!r}, but this pendulum has "
+                f"motion was solved with omega0={bad!r}, but this pendulum has "
                 f"omega0=sqrt(g/length)={self.omega0!r}; use pendulum.solve(theta0, dtheta0)"
             )
 
@@ -152,7 +159,7 @@ class Pendulum:
         Returns
         -------
         x, y : float or ndarray
-            Coordinates in metres, of the shape of ``t``.
+            Coordinates in metres, of the shape broadcast(S, t) (as ``motion.theta(t)``).
 
         Examples
         --------
@@ -195,7 +202,7 @@ class Pendulum:
         Returns
         -------
         float or ndarray
-            T in newtons, of the shape of ``t``.
+            T in newtons, of the shape broadcast(S, t) (as ``motion.theta(t)``).
 
         Examples
         --------
@@ -212,7 +219,7 @@ class Pendulum:
         tension = self.mass * (self.length * dtheta**2 + self.g * np.cos(theta))
         return scalar_or_array(tension, theta)
 
-    def energy(self, motion: _motion.Motion) -> float:
+    def energy(self, motion: _motion.Motion) -> FloatOrArray:
         r"""Total mechanical energy of the motion, kinetic plus potential (pivot at y = 0).
 
         .. math:: \frac{m}{2}|\mathbf{v}|^2 + m g y
@@ -226,9 +233,10 @@ class Pendulum:
 
         Returns
         -------
-        float
-            The energy in joules; :math:`-mg\ell` at rest at the bottom, :math:`+mg\ell` on the
-            separatrix (regime III).
+        float or ndarray
+            The energy in joules (an array of the states' shape S for an array of states);
+            :math:`-mg\ell` at rest at the bottom, :math:`+mg\ell` on the separatrix
+            (regime III).
 
         Examples
         --------
@@ -239,4 +247,5 @@ class Pendulum:
         0.0
         """
         self._check(motion)
-        return 0.5 * self.mass * self.length**2 * float(motion.energy_constant)
+        c1 = motion.energy_constant
+        return 0.5 * self.mass * self.length**2 * (c1 if np.ndim(c1) else float(c1))
