@@ -10,14 +10,12 @@ exactly from the double k.
 # ruff: noqa: B023
 
 import math
-from fractions import Fraction
 
 import mpmath
 import numpy as np
 import pytest
 
 import elliptic_pendulum as ep
-from elliptic_pendulum._engine import dd as _dd
 from tests.strict import quietly
 
 
@@ -27,22 +25,7 @@ def _context(dps):
     return ctx
 
 
-MP40 = _context(40)
 MP60 = _context(60)
-
-
-def _exact(pair):
-    return Fraction(pair[0]) + Fraction(pair[1])
-
-
-def _rel(pair, exact):
-    return float(abs(_exact(pair) - exact) / abs(exact))
-
-
-def _random_dd(rng, spread=30):
-    hi = float(rng.uniform(0.5, 2.0)) * 2.0 ** int(rng.integers(-spread, spread))
-    hi = hi if rng.random() < 0.5 else -hi
-    return _dd.fast_two_sum(hi, float(rng.uniform(-0.5, 0.5)) * math.ulp(hi))
 
 
 # --- no spurious floating-point warnings at the edges --------------------------

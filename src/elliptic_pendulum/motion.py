@@ -15,6 +15,7 @@ IV, evaluated so that no digit is lost near the bottom or the top:
 
 from __future__ import annotations
 
+import html
 import math
 from collections.abc import Iterator
 from dataclasses import dataclass, field
@@ -23,7 +24,6 @@ from typing import Any, cast, overload
 import numpy as np
 import numpy.typing as npt
 
-from . import _display
 from ._engine import flow as _flow
 from ._engine import scalar as _scalar
 from ._engine import states as _states
@@ -183,11 +183,11 @@ class Motion:
         >>> solve([0.5, 0.0], [0.0, 3.0])
         Motion(shape=(2,), regimes={'II': 1, 'IV': 1})
         """
-        return _display.text(self)
+        return _text(self)
 
     def _repr_html_(self) -> str:
         """Return a small HTML table for Jupyter: regime, c1, amplitude or gamma, period."""
-        return _display.html(self)
+        return _html(self)
 
     def __bool__(self) -> bool:
         """Return True for a single state; for an array of states, ``len(m) != 0``.
@@ -326,3 +326,51 @@ def _frozen(fields: Any) -> Any:
         for x in fields:
             _frozen(x)
     return fields
+
+
+# --- how a Motion shows itself: a one-line repr and a small table for Jupyter --------------
+
+
+def _summary(motion: Any) -> list[tuple[str, str]]:
+    """Return (label, value) rows: regime, c1, amplitude or gamma, period; or counts."""
+    if motion.shape != ():
+        counts = {r: int(np.count_nonzero(motion._p.code == i)) for i, r in enumerate(REGIMES)}
+        rows = [("states", f"{int(np.prod(motion.shape))} of shape {motion.shape}")]
+        rows += [(f"regime {r.value} ({r.name.lower()})", str(n))
+                 for r, n in counts.items() if n]
+        return rows
+    regime = motion.regime
+    rows = [("regime", f"{regime.value} ({regime.name.lower()})"),
+            ("theta0, theta0'", f"{motion.theta0:.6g}, {motion.dtheta0:.6g}"),
+            ("omega0", f"{motion.omega0:.6g}"),
+            ("c1", f"{motion.energy_constant:.10g}")]
+    if regime is Regime.ROTATION:
+        rows.append(("gamma", f"{motion.modulus:.10g}"))
+        rows.append(("time per revolution", f"{motion.period:.10g}"))
+    else:
+        rows.append(("amplitude", f"{motion.amplitude:.10g}"))
+        rows.append(("period", "inf" if math.isinf(motion.period) else f"{motion.period:.10g}"))
+    return rows
+
+
+def _text(motion: Any) -> str:
+    """Return the one-line repr."""
+    if motion.shape != ():
+        counts = {r.value: int(np.count_nonzero(motion._p.code == i))
+                  for i, r in enumerate(REGIMES)}
+        regimes = {k: n for k, n in counts.items() if n}
+        return f"Motion(shape={motion.shape}, regimes={regimes})"
+    size = ("gamma", motion.modulus) if motion.regime is Regime.ROTATION else \
+        ("amplitude", motion.amplitude)
+    fields = [("theta0", motion.theta0), ("dtheta0", motion.dtheta0), ("omega0", motion.omega0),
+              ("c1", motion.energy_constant), size, ("period", motion.period)]
+    return (f"Motion(regime='{motion.regime.value}', "
+            + ", ".join(f"{k}={v:.10g}" for k, v in fields) + ")")
+
+
+def _html(motion: Any) -> str:
+    """Return the HTML table."""
+    body = "".join(f"<tr><th style='text-align:left'>{html.escape(k)}</th>"
+                   f"<td style='text-align:left'>{html.escape(v)}</td></tr>"
+                   for k, v in _summary(motion))
+    return f"<table><caption>elliptic_pendulum.Motion</caption>{body}</table>"
