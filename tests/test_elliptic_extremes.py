@@ -230,7 +230,7 @@ def test_landen_levels_end_circular():
     # agreeing to 4e-16) left up to 1.6e-15, 7 ulp in cn and dn. Reference: the AGM of the
     # exact double kc, run in mpmath at 60 digits for as many steps as the library took.
     from elliptic_pendulum._engine import landen as _landen
-    from elliptic_pendulum._engine import scalar as _scalar
+
     rng = np.random.default_rng(105)
     for kc in np.concatenate([rng.uniform(0.0, 1.0, 300), 10.0 ** rng.uniform(-17, 0, 300)]):
         c = _landen.constants(float(kc))
@@ -239,7 +239,7 @@ def test_landen_levels_end_circular():
         for _ in range(steps):
             a, b = (a + b) / 2, MP60.sqrt(a * b)
         assert 1 - (b / a) ** 2 <= 2.5e-17, (kc, steps)
-        assert _scalar.landen(float(kc), 0.0) == c  # the scalar mirror, to the bit
+        assert _landen.constants_float(float(kc), 0.0) == c  # the float twin, to the bit
 
 
 def test_near_one_from_above_boost_like_rows():

@@ -39,7 +39,6 @@ from scipy import special
 
 from ._engine import jacobi as _jacobi
 from ._engine import landen as _landen
-from ._engine import scalar as _scalar
 from ._validation import FloatOrArray, modulus_pair, real_array, scalar_or_array
 
 __all__ = ["complete_integral", "incomplete_integral", "inverse_integral",
@@ -247,7 +246,7 @@ def jacobi(u: npt.ArrayLike, k: npt.ArrayLike,
     True
     """
     if kc is None and type(u) is float and type(k) is float:  # one number: the fast path
-        one = _scalar.jacobi(u, k)
+        one = _jacobi.values_float(u, k)
         if one is not None:
             return one[0], one[1], one[2]
     u = real_array(u, "u")
@@ -384,7 +383,7 @@ def am(u: npt.ArrayLike, k: npt.ArrayLike, kc: npt.ArrayLike | None = None) -> F
     True
     """
     if kc is None and type(u) is float and type(k) is float:  # one number: the fast path
-        one = _scalar.jacobi(u, k, amplitude=True)
+        one = _jacobi.values_float(u, k, amplitude=True)
         if one is not None:
             return one[3]
     u = real_array(u, "u")

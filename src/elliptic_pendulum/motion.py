@@ -25,7 +25,6 @@ import numpy as np
 import numpy.typing as npt
 
 from ._engine import flow as _flow
-from ._engine import scalar as _scalar
 from ._engine import states as _states
 from ._engine.codes import SEPARATRIX
 from ._validation import FloatOrArray, positive_array, real_array, scalar_or_array
@@ -131,7 +130,7 @@ class Motion:
         """
         if (type(t) is float and math.isfinite(t) and type(self._p.code) is int
                 and self._p.code != SEPARATRIX):  # one state at one time: the fast path
-            return _scalar.state(self._p, t, True, False)[0]
+            return _flow.state_float(self._p, t, True, False)[0]
         t = real_array(t, "t")
         return scalar_or_array(_flow.evaluate(self._p, t, True, False)[0], t, self._p.code)
 
@@ -146,7 +145,7 @@ class Motion:
         """Return the angular velocity theta'(t); float, or an array of shape broadcast(S, t)."""
         if (type(t) is float and math.isfinite(t) and type(self._p.code) is int
                 and self._p.code != SEPARATRIX):  # one state at one time: the fast path
-            return _scalar.state(self._p, t, False, True)[1]
+            return _flow.state_float(self._p, t, False, True)[1]
         t = real_array(t, "t")
         return scalar_or_array(_flow.evaluate(self._p, t, False, True)[1], t, self._p.code)
 
@@ -161,7 +160,7 @@ class Motion:
         """
         if (type(t) is float and math.isfinite(t) and type(self._p.code) is int
                 and self._p.code != SEPARATRIX):  # one state at one time: the fast path
-            return _scalar.state(self._p, t)
+            return _flow.state_float(self._p, t)
         t = real_array(t, "t")
         theta, dtheta = _flow.evaluate(self._p, t)
         return (scalar_or_array(theta, t, self._p.code),
@@ -296,7 +295,7 @@ def solve(theta0: ArrayLike, dtheta0: ArrayLike = 0.0, omega0: ArrayLike = 1.0) 
             plain = [float(cast(float, x)) for x in (theta0, dtheta0, omega0)]
         except OverflowError:  # an int beyond doubles: the array path says so
             plain = []
-        one = _scalar.solve(*plain) if plain else None
+        one = _states.solve_float(*plain) if plain else None
         if one is not None:  # one state in the usual range: the fast path, the same bits
             public, params = one
             return Motion(REGIMES[params[0]], *public,  # type: ignore[call-arg]

@@ -194,8 +194,8 @@ def test_repr_and_html_summary():
 
 
 def test_scalar_calls_give_the_array_bits():
-    # The fast path of one number (_engine/scalar.py): one state at one time, and sn, cn,
-    # dn, am of one u and k, give the very bits of the array call.
+    # The fast path of one number (the engine's <name>_float twins): one state at one time,
+    # and sn, cn, dn, am of one u and k, give the very bits of the array call.
     rng = np.random.default_rng(17)
     theta0, dtheta0, omega0 = random_states(300, rng, near_fraction=0.2)
     t = rng.uniform(-40.0, 40.0, theta0.size)

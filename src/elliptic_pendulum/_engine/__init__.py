@@ -12,6 +12,9 @@ Modules, from the bottom up (the design note of the reference site gives the inv
 * :mod:`.codes` -- the integer code of each regime;
 * :mod:`.classify` and :mod:`.farstates` -- initial states to regime, modulus and phase;
 * :mod:`.flow` -- theta(t) and theta'(t) from those parameters;
-* :mod:`.states` -- arrays of states, in chunks, to the parameters a Motion keeps;
-* :mod:`.scalar` -- the same algorithms on Python floats, for one state at a time, to the bit.
+* :mod:`.states` -- arrays of states, in chunks, to the parameters a Motion keeps.
+
+Each kernel has a twin on Python floats, ``<name>_float``, right below it in its module: the
+same operations in the same order, for one number at a time, to the bit (a NumPy call on one
+number costs a microsecond of dispatch).
 """

@@ -31,6 +31,7 @@ for the call (:mod:`.farstates`), never through ``mpmath.mp``.
 
 from __future__ import annotations
 
+import math
 from typing import NamedTuple
 
 import numpy as np
@@ -79,6 +80,14 @@ def _minus_turns(th, m):
     return rh, rl
 
 
+def _minus_turns_float(th, m):
+    """Compute :func:`_minus_turns` on Python floats (its twin: the same bits)."""
+    h, lo = th - m * _TWO_PI_HI[0], -m * _TWO_PI_HI[1]
+    rh, rl = _dd.two_sum(h, lo)
+    p, e = _dd.two_prod(m, _TWO_PI[1])
+    return _dd.add(rh, rl, -p, -e - m * _TWO_PI[2])
+
+
 def _odd_pi(th):
     """Return where th is the double nearest an odd multiple of pi, and that odd integer."""
     odd = 2.0 * np.floor(0.5 * (th / _dd.PI_HI + 1.0)) - 1.0
@@ -123,6 +132,38 @@ def _half_angle(th):
         turns = np.where(odd, p + (e + m_odd * _TWO_PI[1]), turns)
         s = (np.where(odd, up, s[0]), np.where(odd, 0.0, s[1]))
         c = (np.where(odd, 0.0, c[0]), np.where(odd, 0.0, c[1]))
+    return turns, s, c
+
+
+def _half_angle_float(th):
+    """Compute :func:`_half_angle` on Python floats (its twin: the same bits)."""
+    m = float(round(th / _TWO_PI[0]))
+    rh, rl = _minus_turns_float(th, m)
+    over = 1.0 if rh > _dd.PI_HI else (-1.0 if rh < -_dd.PI_HI else 0.0)
+    if over != 0:
+        m = m + over
+        rh, rl = _minus_turns_float(th, m)
+    sign = -1.0 if rh < 0 else 1.0
+    ah, al = 0.5 * sign * rh, 0.5 * sign * rl
+    top = ah > 0.25 * _dd.PI_HI
+    dh, dl = _dd.add(0.5 * _dd.PI_HI, 0.5 * _dd.PI_LO, -ah, -al)
+    dl = dl + 0.5 * _dd.PI_LO2
+    yh, yl = (dh, dl) if top else (ah, al)
+    sh, sl, ch, cl = _dd.sincos(yh, yl, lambda x: float(round(x)), lambda t, j: t[int(j)])
+    s = (sign * ch, sign * cl) if top else (sign * sh, sign * sl)
+    c = (sh, sl) if top else (ch, cl)
+    p, e = _dd.two_prod(m, _TWO_PI[0])
+    turns = p + (e + m * _TWO_PI[1])
+    if m != 0 and th == turns:  # the double nearest 2 pi m: the bottom exactly
+        s, c = (0.0, 0.0), (1.0, 0.0)
+    odd = 2.0 * math.floor(0.5 * (th / _dd.PI_HI + 1.0)) - 1.0
+    odd = 1.0 if odd == 0 else odd
+    p, e = _dd.two_prod(odd, _dd.PI_HI)
+    if th == p + (e + odd * _dd.PI_LO):
+        up = 1.0 if th > 0 else -1.0
+        m_odd = 0.5 * (odd - up)
+        p, e = _dd.two_prod(m_odd, _TWO_PI[0])
+        turns, s, c = p + (e + m_odd * _TWO_PI[1]), (up, 0.0), (0.0, 0.0)
     return turns, s, c
 
 
@@ -232,3 +273,29 @@ def phases(st: State, quarter: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     q = np.where(lib, q_lib, np.where(rot, q_rot, 0.0))
     rem = np.where(lib, r_lib, np.where(rot, r_rot, 0.0))
     return q, rem
+
+
+
+def _rf_float(x, y):
+    return float(special.elliprf(x, y, 1.0))
+
+
+def phase_float(s, c, w, k, kc, rot):
+    """Compute :func:`phases` of one state of regime II or IV on Python floats (its twin)."""
+    sgn_s = -1.0 if s < 0 else 1.0
+    sgn_w = -1.0 if w < 0 else 1.0
+    aw = abs(w)
+    if not rot:
+        if s * s * (1.0 + kc) < k * k:
+            x, y = w / k, c * c
+            f = (s / k) * _rf_float(x * x, y)
+            return (0.0, f) if w >= 0 else (2.0 * sgn_s, -f)
+        x, y = kc * s / (k * c), kc / c
+        f = (w / (k * c)) * _rf_float(x * x, y * y)
+        return sgn_s, -sgn_s * f
+    if s * s * (1.0 + kc) < 1.0:
+        y = w / k
+        return 0.0, (sgn_w * s) * _rf_float(c * c, y * y)
+    x, y = kc * s * k / aw, kc * k / aw
+    q = sgn_w * sgn_s
+    return q, -q * ((c * k / aw) * _rf_float(x * x, y * y))

@@ -207,6 +207,14 @@ def _turned(p: Params, quarters, rest):
     return big + small, small
 
 
+def _turned_float(p, quarters, rest):
+    """Compute :func:`_turned` of one state on Python floats (its twin)."""
+    count = 2.0 * float(round(p.turns / (2.0 * _PI_HI))) + p.sigma * quarters
+    big, err = _two_prod(count, _PI_HI)
+    small = (err + count * _PI_LO) + p.sigma * 2.0 * rest
+    return big + small, small
+
+
 def _direct(p: Params, t, tau, redo, theta):
     """Theta at the points ``redo`` from u = tau + rem + quarters K, reduced exactly.
 
@@ -311,3 +319,61 @@ def _evaluate(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool):
                 if out is not None:
                     out[key] = value
     return outs[0], outs[1]
+
+
+
+def state_float(p, t: float, want_theta: bool = True, want_dtheta: bool = True):
+    """Compute :func:`evaluate` of one state (Params of Python floats) at one t (its twin).
+
+    The caller keeps the separatrix (III, moving) on the array path.
+    """
+    if p.still:
+        return p.theta0, 0.0
+    if not (abs(t) <= 1e290 and abs(t) * p.rate <= 1e290):
+        raise ValueError("t is too large: |omega0 t| must stay below about 1e290 "
+                         "(the elliptic argument grows like omega0 t)")
+    a, a_lo = _two_prod(p.rate, t)
+    rot = p.code == ROTATION
+    c = p.landen
+    sn, cn, dn, am = _landen.evaluate_float(a, c, a_lo + p.rate_lo * t,
+                                            amplitude="split" if rot else False, name="t")
+    s, cs, w, k, sigma = p.s, p.c, p.w, p.k, p.sigma
+    theta = dtheta = None
+    if rot:
+        aw = abs(w)
+        d0 = aw / k
+        c_l, d0_l, cn_l = cs, d0, cn
+        if d0 < _DEEP:  # rescaled as in _rotation
+            lam = math.ldexp(1.0, -math.frexp(d0)[1])
+            c_l, d0_l, cn_l = lam * cs, lam * d0, lam * cn
+        if want_theta:
+            d0m1 = -(s / k) * (s / (aw + k))
+            spread = cn * cn_l + d0_l * sn * sn
+            y = sigma * s * dn * spread + c_l * sn * cn * d0m1
+            x = cs * spread - sigma * s * sn * cn_l * dn * d0m1
+            delta = _landen._f(np.arctan2, y, x)
+            quarters, rest = am
+            theta, small = _turned_float(p, quarters, rest + delta)
+            redo = abs(small) < (abs(rest) + abs(delta)) * (1.0 / 64.0)
+        if want_dtheta:
+            s_k = s / k
+            dn_u = ((d0_l * dn - sigma * s_k * (c_l / k) * sn * cn)
+                    / (d0_l * d0 + s_k * s_k * cn * cn_l))
+            dtheta = sigma * 2.0 * p.rate * dn_u
+    else:
+        if want_theta:
+            first, second = s * cn * dn, w * cs * sn
+            y = first + second
+            x = cs * dn - s * w * sn * cn
+            theta = p.turns + 2.0 * _landen._f(np.arctan2, y, x)
+            redo = abs(y) < (abs(first) + abs(second)) * (1.0 / 64.0)
+        if want_dtheta:
+            dtheta = 2.0 * p.omega0 * (w * cn - s * cs * sn * dn) / (cs * cs + s * s * cn * cn)
+    if want_theta and redo:
+        u, u_lo = _two_sum(a, p.rem)
+        u_lo = u_lo + (a_lo + p.rate_lo * t)
+        sn, _, dn, (quarters, rest) = _landen.evaluate_float(u, c, u_lo, amplitude="split",
+                                                             name="t", quarters=p.quarters)
+        theta = _turned_float(p, quarters, rest)[0] if rot else \
+            p.turns + 2.0 * _landen._f(np.arctan2, k * sn, dn)
+    return theta, dtheta

@@ -17,6 +17,8 @@ for any |k u| <= 1e290. Measured against mpmath over k in [2, 1.7e308]: within 3
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from . import dd as _dd
@@ -105,3 +107,20 @@ def _values(u, k, kc, kc_lo, amplitude):
         if amplitude:
             am_ = np.where(big, r[3], am_)
     return sn_, cn_, dn_, am_
+
+
+
+def values_float(u: float, k: float, amplitude: bool = False):
+    """Compute :func:`values` of one u and one modulus 0 < k < 1 on Python floats (its twin).
+
+    sn, cn, dn (and am), the bits of the array call; None where the array path decides.
+    """
+    if not 0.0 < k < 1.0 or not math.isfinite(u):
+        return None
+    a, a_lo = _dd.two_sum(1.0, -k)
+    b, b_lo = _dd.two_sum(1.0, k)
+    p, p_lo = _dd.mul(a, a_lo, b, b_lo)
+    kc, kc_lo = _dd.sqrt(p, p_lo, math.sqrt)
+    if kc == 1.0:
+        return None  # k so small that kc rounds to 1: the circular edge, on the array path
+    return _landen.evaluate_float(u, _landen.constants_float(kc, kc_lo), amplitude=amplitude)

@@ -21,6 +21,7 @@ the complementary modulus kc carries information:
 
 from __future__ import annotations
 
+import math
 from functools import lru_cache
 from typing import Any, NamedTuple
 
@@ -109,6 +110,35 @@ def _constants(kc: Any, kc_lo: Any = 0.0) -> Constants:
 
 
 @lru_cache(maxsize=256)
+def _constants_float(kc: float, kc_lo: float) -> Constants:
+    """Compute :func:`_constants` of one modulus on Python floats (its twin: the same bits)."""
+    a, b = 1.0, kc
+    done = a == b  # as in landen._constants: at least one step, and one past a, b within 1e-8
+    mu, nu = [a], [a if done else b]
+    while not done:
+        done = abs(a - b) <= 1e-8 * a
+        a, b = 0.5 * (a + b), math.sqrt(a * b)
+        mu.append(a)
+        nu.append(a if done else b)
+    ah, al = 1.0, 0.0
+    bh, bl = _fast_two_sum(kc, kc_lo + 0.0 * kc)
+    for _ in range(60):
+        dh, dl = _two_sum(ah, -bh)
+        if abs(dh + (dl + al - bl)) <= 1e-31 * ah:
+            break
+        sh, sl = _two_sum(ah, bh)
+        ph, pl = _dd.mul(ah, al, bh, bl)
+        gh, gl = _dd.sqrt(ph, pl, math.sqrt)
+        ah, al = _fast_two_sum(0.5 * sh, 0.5 * (sl + al + bl))
+        bh, bl = gh, gl
+    kh, kl = _dd.div(0.5 * _PI_HI + 0.0 * ah, 0.5 * _PI_LO + 0.0 * ah, ah, al)
+    k_hi = _dd.split(kh)[0]
+    k_mid = _dd.split(kh - k_hi + kl)[0]
+    k_lo = (kh - k_hi - k_mid) + kl
+    return Constants(kc, kh + kl, k_hi, k_mid, k_lo, ah, tuple(mu), tuple(nu))
+
+
+@lru_cache(maxsize=256)
 def _scalar_constants(kc: float, kc_lo: float) -> Constants:
     return _constants(np.float64(kc), kc_lo)
 
@@ -119,6 +149,12 @@ def constants(kc: Any, kc_lo: Any = 0.0) -> Constants:
         if np.ndim(kc) == 0 and np.ndim(kc_lo) == 0:
             return _scalar_constants(float(kc), float(kc_lo))
         return _constants(kc, kc_lo)
+
+
+@lru_cache(maxsize=256)
+def constants_float(kc: float, kc_lo: float) -> Constants:
+    """Return the Landen constants of one modulus as Python floats (cached)."""
+    return _constants_float(kc, kc_lo)
 
 
 def complement(k: Any) -> tuple[Any, Any]:
@@ -220,6 +256,60 @@ def evaluate(u, c: Constants, u_lo=0.0, amplitude: bool | str = False, name: str
     # One arctan2 pass for both cases (arctan r = arctan2(r, 1)).
     am = np.arctan2(np.where(odd, ratio, s), np.where(odd, 1.0, cn_v))
     if amplitude == "split":  # am = n pi/2 + am, for a caller that adds n pi/2 exactly
+        return sn, cn, dn, (n, am)
+    return sn, cn, dn, (n * (0.5 * _PI_HI) + am) + n * (0.5 * _PI_LO)
+
+
+def _f(ufunc, *args):
+    """One NumPy ufunc on Python floats, as a float (the bits of the array call)."""
+    # Underflow to a subnormal or zero is the right answer, and the array path ignores it
+    # (np.errstate(under="ignore")); so here, whatever the caller's np.seterr or warning
+    # filters. Entering np.errstate costs a microsecond: only on the rare call that signals.
+    try:
+        return float(ufunc(*args))
+    except (FloatingPointError, RuntimeWarning):
+        with np.errstate(under="ignore"):
+            return float(ufunc(*args))
+
+
+def evaluate_float(u, c, u_lo=0.0, amplitude=False, name="u", quarters=0.0):
+    """Compute :func:`evaluate` of one u (kc > 0) on Python floats (its twin: the same bits)."""
+    n = float(round(u / c.quarter))
+    v = ((u - n * c.k_hi) - n * c.k_mid) + (u_lo - n * c.k_lo)
+    n = n + quarters
+    if abs(n) >= _MAX_QUARTERS:
+        raise ValueError(f"{name} is too large: the elliptic argument must stay below "
+                         "2**26 quarter periods (about 6.7e7 K1) for an exact reduction")
+    q = n % 4.0
+    if c.kc < _TINY_KC:
+        sech_v = _f(sech, v)
+        s, cn_v, dn_v, ratio = _f(np.tanh, v), sech_v, sech_v, c.kc * _f(np.sinh, v)
+    else:
+        mu, nu = c.mu, c.nu
+        cc = mu[-1] * _f(np.tan, v * c.scale)
+        d = 1.0
+        for i in range(len(mu) - 2, -1, -1):
+            r = cc * cc / mu[i + 1]
+            cc = d * cc
+            d = (r + nu[i]) / (r + mu[i])
+        dn_v = c.kc / d
+        cn_v = dn_v / _f(np.hypot, 1.0, cc)
+        s = cn_v * cc / c.kc
+        ratio = cc
+    odd = q in (1.0, 3.0)
+    sign = -1.0 if q >= 2.0 else 1.0
+    sn = sign * (cn_v / dn_v if odd else s)
+    cn = sign * (-c.kc * s / dn_v if odd else cn_v)
+    dn = c.kc / dn_v if odd else dn_v
+    if not amplitude:
+        return sn, cn, dn, None
+    y, x = (ratio, 1.0) if odd else (s, cn_v)
+    if abs(y) < 1e-300:  # a subnormal amplitude is right; the array path ignores underflow too
+        with np.errstate(under="ignore"):
+            am = _f(np.arctan2, y, x)
+    else:
+        am = _f(np.arctan2, y, x)
+    if amplitude == "split":
         return sn, cn, dn, (n, am)
     return sn, cn, dn, (n * (0.5 * _PI_HI) + am) + n * (0.5 * _PI_LO)
 

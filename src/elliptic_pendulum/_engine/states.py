@@ -12,6 +12,7 @@ import math
 
 import numpy as np
 
+from . import classify as _classify
 from . import dd as _dd
 from . import flow as _flow
 from . import landen as _landen
@@ -124,6 +125,56 @@ def _solve(th, v, w0):
     nu = [join(column) for column in zip(*(_pad(p.landen.nu, levels) for _, p in parts),
                                          strict=True)]
     return public, _flow.Params(*scalars, _landen.Constants(*c, tuple(mu), tuple(nu)))
+
+
+def solve_float(th: float, v: float, w0: float):
+    """Compute :func:`solve` of one state in the usual range on Python floats (its twin).
+
+    Public values and Params (Python scalars), the bits of the array call; or None where the
+    array path decides (far states, rest, the separatrix).
+    """
+    if not 2.0 ** -300 < w0 < 2.0 ** 300:
+        return None
+    wh = v / (2.0 * w0)
+    if not ((th == 0 or 2.0 ** -300 < abs(th) < 2.0 ** 20)
+            and (v == 0 or 2.0 ** -300 <= abs(wh) < 2.0 ** 300)):
+        return None
+    turns, (sh, sl), (ch, cl) = _classify._half_angle_float(th)
+    p, e = _dd.two_prod(wh, 2.0 * w0)
+    wl = ((v - p) - e) / (2.0 * w0)
+    k2 = _dd.add(*_dd.mul(sh, sl, sh, sl), *_dd.mul(wh, wl, wh, wl))
+    aw = -1.0 if wh < 0 else 1.0
+    kc2 = _dd.mul(*_dd.add(ch, cl, -aw * wh, -aw * wl), *_dd.add(ch, cl, aw * wh, aw * wl))
+    code = LIBRATION if kc2[0] > 0 else (ROTATION if kc2[0] < 0 else SEPARATRIX)
+    if sh == 0 and wh == 0:
+        return None  # at rest at the bottom: the array path
+    k = _dd.sqrt(k2[0], k2[1], math.sqrt)
+    beta = _dd.add(k2[0], k2[1], -kc2[0], -kc2[1])
+    if code == SEPARATRIX:
+        return None
+    kc = _dd.sqrt(abs(kc2[0]), -kc2[1] if kc2[0] < 0 else kc2[1], math.sqrt)
+    rot = code == ROTATION
+    mod_c = _dd.div(*kc, *k) if rot else kc
+    rate = _dd.mul_d(k[0], k[1], w0) if rot else (w0, 0.0)
+    if not (rate[0] < 1e290 and mod_c[0] >= 1e-300 and 2.0 ** -400 < w0 < 2.0 ** 400):
+        return None
+    c1 = _dd.mul(*_dd.two_prod(w0, 2.0 * w0), *beta)[0]
+    if not math.isfinite(c1):
+        return None
+    landen = _landen._constants_float(*mod_c)
+    q, rem = _classify.phase_float(sh, ch, wh, k[0], mod_c[0], rot)
+    quarter = landen.quarter
+    sigma = -1.0 if rot and wh < 0 else 1.0
+    if rot:
+        period, modulus, amplitude = 2.0 * quarter / rate[0], 1.0 / k[0], math.inf
+    else:
+        period, modulus = 4.0 * quarter / w0, k[0]
+        amplitude = 2.0 * float(np.arctan2(k[0], mod_c[0]))
+    public = [th, v, w0, c1, modulus, mod_c[0], amplitude, q * quarter + rem, int(sigma),
+              period, beta[0]]
+    params = (code, False, th, turns, w0, sigma, k[0], sh, ch, wh, rate[0], rate[1], q, rem,
+              landen)
+    return public, params
 
 
 def plain(values: list, p: _flow.Params) -> list:
