@@ -53,6 +53,10 @@ napoleon_type_aliases = {
 }
 
 autodoc_typehints = "description"
+# Signatures show the function's own name: its module is the section it is documented in,
+# and a dotted path such as "elliptic_pendulum.periods.approximations." is one unbreakable
+# token that a phone's screen cuts off.
+add_module_names = False
 autodoc_member_order = "bysource"
 autodoc_default_options = {"members": True, "undoc-members": False, "show-inheritance": True}
 
