@@ -316,3 +316,8 @@ def test_odd_multiples_of_pi_are_the_top(multiple):
         assert ep.solve(neighbour).regime is Regime.LIBRATION
     # the mutant "only math.pi is pi" would make 3 * math.pi a libration
     assert ep.solve(3 * math.pi).regime is Regime.SEPARATRIX
+    # math.pi * n whose quotient by math.pi rounds an ulp off n (-13 * math.pi / math.pi is
+    # -13.000000000000002): the mutant "floor(x/2 + 1/2)" picked the next odd integer
+    for theta0 in (13 * math.pi, -13 * math.pi, -34.55751918948773):  # 13 pi, -13 pi, -11 pi
+        assert ep.solve(theta0).regime is Regime.SEPARATRIX, theta0
+        assert ep.solve(np.array([theta0])).regime[0] is Regime.SEPARATRIX, theta0
