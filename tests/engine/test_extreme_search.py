@@ -2,7 +2,7 @@
 
 Reference: :class:`tests.mpref.Exact`, the note's (25), (28) and (46) in mpmath from the exact
 doubles of the state, with the library's one convention (the double nearest a multiple of pi,
-while doubles are finer than pi, means that multiple: odd at the top, even at the bottom) and
+below 2**50, means that multiple: odd at the top, even at the bottom) and
 at as many digits as the state needs (the reduction of a far angle, the cancellation in
 1 - k^2 near the separatrix, the reduction of the elliptic argument at large t).
 
@@ -393,6 +393,8 @@ def test_outside_the_domain_a_value_error_names_the_parameter(data):
 
 with mpmath.workdps(40):
     _NEAREST_2_52_PLUS_1_PI = float((2**52 + 1) * mpmath.pi)
+    # the largest odd multiple of pi below 2**50: still the top (docs/conventions.md)
+    _NEAREST_BELOW_2_50 = float((2 * int(2**50 / mpmath.pi / 2) - 1) * mpmath.pi)
 
 
 @pytest.mark.parametrize(("theta0", "dtheta0", "omega0", "t"), [
@@ -407,7 +409,9 @@ with mpmath.workdps(40):
     # new
     pytest.param(-13 * math.pi, 0.0, 1.0, 50.0, id="odd-multiple-13"),
     pytest.param(-34.55751918948773, 0.0, 1.0, 50.0, id="odd-multiple-11"),
+    # beyond 2**50 every double is itself (the documented convention; the oracle had 2**54)
     pytest.param(_NEAREST_2_52_PLUS_1_PI, 0.0, 1.0, 1.0, id="odd-multiple-beyond-2**50"),
+    pytest.param(_NEAREST_BELOW_2_50, 0.0, 1.0, 1.0, id="odd-multiple-below-2**50"),
     pytest.param(1e-200, 2.0, 1.0, 1000.0, id="tiny-angle-beside-separatrix"),
     pytest.param(8.892898100017254e-42, 2.1800754380841732e-106, 1.0900377190420866e-106, 1.0,
                  id="small-angle-beside-separatrix"),

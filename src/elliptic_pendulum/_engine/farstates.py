@@ -31,7 +31,11 @@ def classify(theta0: float, dtheta0: float, omega0: float) -> tuple:
     w = ctx.mpf(dtheta0) / (2 * w0)
     m = ctx.nint(ctx.mpf(theta0) / (2 * ctx.pi))
     odd = ctx.nint((ctx.mpf(theta0) / ctx.pi - 1) / 2) * 2 + 1
-    # The double nearest an odd multiple of pi, while doubles are spaced finer than pi.
+    # The double nearest an odd (or even) multiple of pi means that multiple, below 2**50
+    # only (docs/conventions.md): there doubles are at most 1/4 apart, so each multiple has
+    # a nearest double of its own, far from every other multiple. From 2**53 the spacing is
+    # 2 and from 2**54 above pi (a double may be the nearest to no multiple, or to two);
+    # 2**50 keeps a margin below that, and beyond it every double is taken as it is.
     if 0 < abs(theta0) < 2.0**50 and float(odd * ctx.pi) == theta0:
         up = 1 if theta0 > 0 else -1
         m = (odd - up) / 2
