@@ -283,6 +283,21 @@ def test_tiny_omega0_is_a_free_rotation():
     assert m.period == pytest.approx(2 * math.pi, rel=1e-15)
 
 
+@pytest.mark.parametrize(("theta0", "dtheta0", "omega0", "gamma_c"), [
+    (1e-200, 2.0, 1.0, 5e-201),
+    (-1e-200, -2.0, 1.0, 5e-201),
+    (8.892898100017254e-42, 2.1800754380841732e-106, 1.0900377190420866e-106,
+     4.446449050008627e-42),
+])
+def test_tiny_angle_beside_the_separatrix_rotates(theta0, dtheta0, omega0, gamma_c):
+    # |w| = 1 exactly and a tiny angle (a far state, classified in mpmath): kc^2 = -sin^2(r/2)
+    # and gamma_c = |sin(r/2)|. cos(r/2) = 1 - r^2/8 rounds to 1 at 50 digits, so
+    # c - |w| is formed as (1 - |w|) - 2 sin^2(r/4); the mutant (c - |w|)(c + |w|) made it III.
+    m = ep.solve(theta0, dtheta0, omega0)
+    assert m.regime is Regime.ROTATION
+    assert m.complementary_modulus == pytest.approx(gamma_c, rel=1e-15)
+
+
 @pytest.mark.parametrize(("theta0", "dtheta0", "omega0", "t"), [
     (1.0, 0.0, 1.0, 1e302), (1.0, 5.0, 1.0, -1e300), (0.1, 0.0, 1e10, 1e300)])
 def test_times_beyond_range_raise(theta0, dtheta0, omega0, t):
