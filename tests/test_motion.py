@@ -314,6 +314,17 @@ def test_push_below_the_double_range_at_the_top_raises(dtheta0):
         ep.solve(math.pi, dtheta0)
 
 
+@pytest.mark.parametrize(("dtheta0", "omega0"), [(1e-250, 1e100), (1e-300, 1e10),
+                                                 (-5e-324, 1.0), (1e-300, 1e300)])
+@pytest.mark.parametrize("convert", [float, np.array])
+def test_push_without_a_double_w_raises(dtheta0, omega0, convert):
+    # w = dtheta0 / (2 omega0) below 2**-1022: it would underflow (theta' would come back 0)
+    # or lose its digits as a subnormal (279 ulp off); refused on both paths.
+    with pytest.raises(ValueError, match=r"dtheta0.*omega0.*2\*\*-1022"):
+        ep.solve(convert(0.0), convert(dtheta0), convert(omega0))
+    assert ep.solve(0.0, 2.0 ** -1021, 1.0).dtheta(0.0) == 2.0 ** -1021
+
+
 @pytest.mark.parametrize("multiple", [3, -3, 5, 7, -101, 2**19 + 1])
 def test_odd_multiples_of_pi_are_the_top(multiple):
     # The convention of the engine: the double nearest an odd multiple of pi means that

@@ -253,7 +253,10 @@ def solve(theta0: ArrayLike, dtheta0: ArrayLike = 0.0, omega0: ArrayLike = 1.0) 
         For a non-number.
     ValueError
         For NaN, infinities, omega0 <= 0, shapes that do not broadcast, or an
-        energy beyond the range of doubles (naming the parameter).
+        energy beyond the range of doubles (naming the parameter). For a push
+        too small for omega0 (naming dtheta0 and omega0): w = dtheta0 / (2 omega0)
+        is what the motion carries, and |dtheta0 / (2 omega0)| must be 0 or at
+        least 2**-1022 (below, w would underflow or lose its digits).
 
     Notes
     -----
