@@ -256,7 +256,11 @@ def solve(theta0: ArrayLike, dtheta0: ArrayLike = 0.0, omega0: ArrayLike = 1.0) 
         energy beyond the range of doubles (naming the parameter). For a push
         too small for omega0 (naming dtheta0 and omega0): w = dtheta0 / (2 omega0)
         is what the motion carries, and |dtheta0 / (2 omega0)| must be 0 or at
-        least 2**-1022 (below, w would underflow or lose its digits).
+        least 2**-1022 (below, w would underflow or lose its digits). For a push
+        so small, this close to the top, that the complementary modulus falls
+        below 1e-300 (naming dtheta0): K = log(4/kc), hence the period, would
+        lose its digits; use dtheta0 = 0 (balanced at the top) or
+        |dtheta0| >= 2e-300 omega0.
 
     Notes
     -----

@@ -199,7 +199,7 @@ def push_too_small(ex):
     """Near the top a push so small that the modulus' complement is below 1e-300.
 
     states._chunk refuses it with a ValueError naming dtheta0 ("use dtheta0 = 0 or
-    |dtheta0| >= 2e-300 * omega0"); the docstring of solve() does not list it.
+    |dtheta0| >= 2e-300 * omega0"), as solve()'s Raises documents.
     """
     return ex.regime in ("II", "IV") and ex.mod_c < 2e-300
 
