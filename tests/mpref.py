@@ -87,10 +87,11 @@ def period(theta0, omega0, dps: int = 50):
 
 # --- any double initial state, at a precision sized for it (tests/engine/test_extreme_search) --
 
-#: The library's convention: the double nearest a multiple n pi of pi means n pi itself (odd n:
-#: balanced at the top; even n: at the bottom), while doubles there are spaced finer than pi
-#: (so that each double is the nearest to at most one multiple): |theta0| < 2**54.
-CONVENTION_LIMIT = 2.0**54
+#: The library's documented convention (docs/conventions.md): the double nearest a multiple n pi
+#: of pi means n pi itself (odd n: balanced at the top; even n: at the bottom) for
+#: |theta0| < 2**50, where doubles are at most 1/4 apart; beyond 2**50 every double is taken
+#: as it is.
+CONVENTION_LIMIT = 2.0**50
 
 
 def _digits(x) -> int:

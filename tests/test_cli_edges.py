@@ -117,7 +117,13 @@ def test_cli_swing_whose_period_overflows_is_not_called_infinite(capsys):
     assert "infinite" not in lines[0] and "largest double" in lines[0]
 
 
-@pytest.mark.parametrize("argv", [("--theta0", "1e-320"), ("--theta0", "30", "--dtheta0", "1e-320"),
+def test_cli_a_subnormal_push_fails_in_one_line(capsys):
+    # 1e-320 deg/s is a subnormal rad/s: w = dtheta0 / (2 omega0) has no normal double, and
+    # solve() refuses it (naming dtheta0 and omega0) rather than lose theta'.
+    assert "dtheta0" in _cli_fails(capsys, "solve", "--theta0", "30", "--dtheta0", "1e-320")
+
+
+@pytest.mark.parametrize("argv", [("--theta0", "1e-320"), ("--theta0", "30", "--dtheta0", "1e-305"),
                                   ("--theta0", "30", "--length", "1", "--g", "1e-320"),
                                   ("--theta0", "30", "--t", "1e-320", "1", "1")])
 def test_cli_tiny_angles_and_rates_print_quietly(capsys, argv):

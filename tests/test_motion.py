@@ -283,6 +283,21 @@ def test_tiny_omega0_is_a_free_rotation():
     assert m.period == pytest.approx(2 * math.pi, rel=1e-15)
 
 
+@pytest.mark.parametrize(("theta0", "dtheta0", "omega0", "gamma_c"), [
+    (1e-200, 2.0, 1.0, 5e-201),
+    (-1e-200, -2.0, 1.0, 5e-201),
+    (8.892898100017254e-42, 2.1800754380841732e-106, 1.0900377190420866e-106,
+     4.446449050008627e-42),
+])
+def test_tiny_angle_beside_the_separatrix_rotates(theta0, dtheta0, omega0, gamma_c):
+    # |w| = 1 exactly and a tiny angle (a far state, classified in mpmath): kc^2 = -sin^2(r/2)
+    # and gamma_c = |sin(r/2)|. cos(r/2) = 1 - r^2/8 rounds to 1 at 50 digits, so
+    # c - |w| is formed as (1 - |w|) - 2 sin^2(r/4); the mutant (c - |w|)(c + |w|) made it III.
+    m = ep.solve(theta0, dtheta0, omega0)
+    assert m.regime is Regime.ROTATION
+    assert m.complementary_modulus == pytest.approx(gamma_c, rel=1e-15)
+
+
 @pytest.mark.parametrize(("theta0", "dtheta0", "omega0", "t"), [
     (1.0, 0.0, 1.0, 1e302), (1.0, 5.0, 1.0, -1e300), (0.1, 0.0, 1e10, 1e300)])
 def test_times_beyond_range_raise(theta0, dtheta0, omega0, t):
@@ -297,6 +312,17 @@ def test_push_below_the_double_range_at_the_top_raises(dtheta0):
     # kc = |theta0'| / (2 omega0) would be subnormal: its period cannot be computed in double.
     with pytest.raises(ValueError, match="dtheta0"):
         ep.solve(math.pi, dtheta0)
+
+
+@pytest.mark.parametrize(("dtheta0", "omega0"), [(1e-250, 1e100), (1e-300, 1e10),
+                                                 (-5e-324, 1.0), (1e-300, 1e300)])
+@pytest.mark.parametrize("convert", [float, np.array])
+def test_push_without_a_double_w_raises(dtheta0, omega0, convert):
+    # w = dtheta0 / (2 omega0) below 2**-1022: it would underflow (theta' would come back 0)
+    # or lose its digits as a subnormal (279 ulp off); refused on both paths.
+    with pytest.raises(ValueError, match=r"dtheta0.*omega0.*2\*\*-1022"):
+        ep.solve(convert(0.0), convert(dtheta0), convert(omega0))
+    assert ep.solve(0.0, 2.0 ** -1021, 1.0).dtheta(0.0) == 2.0 ** -1021
 
 
 @pytest.mark.parametrize("multiple", [3, -3, 5, 7, -101, 2**19 + 1])
@@ -316,3 +342,8 @@ def test_odd_multiples_of_pi_are_the_top(multiple):
         assert ep.solve(neighbour).regime is Regime.LIBRATION
     # the mutant "only math.pi is pi" would make 3 * math.pi a libration
     assert ep.solve(3 * math.pi).regime is Regime.SEPARATRIX
+    # math.pi * n whose quotient by math.pi rounds an ulp off n (-13 * math.pi / math.pi is
+    # -13.000000000000002): the mutant "floor(x/2 + 1/2)" picked the next odd integer
+    for theta0 in (13 * math.pi, -13 * math.pi, -34.55751918948773):  # 13 pi, -13 pi, -11 pi
+        assert ep.solve(theta0).regime is Regime.SEPARATRIX, theta0
+        assert ep.solve(np.array([theta0])).regime[0] is Regime.SEPARATRIX, theta0

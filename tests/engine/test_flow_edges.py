@@ -237,6 +237,9 @@ def test_sign_of_zero_is_the_same_on_both_paths():
     dtheta0 = rng.choice([-1, 1], n) * 10.0 ** rng.uniform(-300, 0.5, n)
     dtheta0[::3] = rng.choice([0.0, -0.0], dtheta0[::3].size)
     omega0 = 10.0 ** rng.uniform(-90, 90, n)
+    # a push whose w = dtheta0 / (2 omega0) has no normal double is refused: signed zeros there
+    gone = np.abs(dtheta0 / (2 * omega0)) < 2.0**-1022
+    dtheta0[gone] = np.copysign(0.0, dtheta0[gone])
     t = rng.choice([-1, 1], n) * 10.0 ** rng.uniform(-300, 0, n) * 30 / (omega0 + abs(dtheta0))
     t[::7] = rng.choice([0.0, -0.0], t[::7].size)
     many = ep.solve(theta0, dtheta0, omega0).state(t)

@@ -31,17 +31,34 @@ def classify(theta0: float, dtheta0: float, omega0: float) -> tuple:
     w = ctx.mpf(dtheta0) / (2 * w0)
     m = ctx.nint(ctx.mpf(theta0) / (2 * ctx.pi))
     odd = ctx.nint((ctx.mpf(theta0) / ctx.pi - 1) / 2) * 2 + 1
-    # The double nearest an odd multiple of pi, while doubles are spaced finer than pi.
+    # The double nearest an odd (or even) multiple of pi means that multiple, below 2**50
+    # only (docs/conventions.md): there doubles are at most 1/4 apart, so each multiple has
+    # a nearest double of its own, far from every other multiple. From 2**53 the spacing is
+    # 2 and from 2**54 above pi (a double may be the nearest to no multiple, or to two);
+    # 2**50 keeps a margin below that, and beyond it every double is taken as it is.
     if 0 < abs(theta0) < 2.0**50 and float(odd * ctx.pi) == theta0:
         up = 1 if theta0 > 0 else -1
         m = (odd - up) / 2
-        s, c = ctx.mpf(up), ctx.mpf(0)
+        s, c, one_minus_c = ctx.mpf(up), ctx.mpf(0), ctx.mpf(1)
     elif m != 0 and abs(theta0) < 2.0**50 and float(2 * ctx.pi * m) == theta0:
         s, c = ctx.mpf(0), ctx.mpf(1)  # the double nearest an even multiple: the bottom
+        one_minus_c = ctx.mpf(0)
     else:
         r = ctx.mpf(theta0) - 2 * ctx.pi * m
         s, c = ctx.sin(r / 2), ctx.cos(r / 2)
-    k2, kc2 = s * s + w * w, (c - abs(w)) * (c + abs(w))
+        one_minus_c = 2 * ctx.sin(r / 4) ** 2
+    # kc^2 = (c - |w|)(c + |w|). Beside the bottom (c >= 1/2) c - |w| is formed as
+    # (1 - |w|) - (1 - c): at a tiny angle c = cos(r/2) = 1 - r^2/8 rounds to 1 at any fixed
+    # precision (r = 1e-200 and |w| = 1 would make a rotation a separatrix), while 1 - c =
+    # 2 sin^2(r/4) keeps its digits and 1 - |w| = (2 omega0 - |theta'|) / (2 omega0) is
+    # rounded once from the exact difference. Nearer the top (c < 1/2, |w| < 1/2 where
+    # they meet) the direct difference keeps its relative digits and the other would not.
+    if c >= 0.5:
+        gap = ctx.fsub(2 * w0, abs(ctx.mpf(dtheta0)), exact=True) / (2 * w0)
+        below = gap - one_minus_c
+    else:
+        below = c - abs(w)
+    k2, kc2 = s * s + w * w, below * (c + abs(w))
     k, kc = ctx.sqrt(k2), ctx.sqrt(abs(kc2))
     if s == 0 and w == 0:
         code = regimes.REST

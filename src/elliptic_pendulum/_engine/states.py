@@ -35,6 +35,15 @@ def _chunk(th, v, w0):
     The public values: theta0, dtheta0, omega0, c1, modulus, complement, amplitude, phase,
     direction, period, beta.
     """
+    # w = theta' / (2 omega0) is what the engine carries (and theta' = 2 omega0 w comes back
+    # from it): a push that leaves no normal double w (it would underflow to 0 or lose its
+    # digits as a subnormal) is refused, not turned into rest or a wrong theta'. A 2 omega0
+    # beyond the doubles is left to the energy's error below.
+    with np.errstate(over="ignore"):
+        two_w0 = 2.0 * w0
+        gone = (v != 0) & (np.abs(v / two_w0) < 2.0**-1022) & np.isfinite(two_w0)
+    _reject(gone, "dtheta0 is too small for omega0: w = dtheta0 / (2 omega0) would be "
+            "below the normal doubles; |dtheta0 / (2 omega0)| must be 0 or at least 2**-1022")
     st = classify(th, v, w0)
     code = st.code
     elliptic = (code == LIBRATION) | (code == ROTATION)
