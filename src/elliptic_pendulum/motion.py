@@ -260,7 +260,8 @@ def solve(theta0: ArrayLike, dtheta0: ArrayLike = 0.0, omega0: ArrayLike = 1.0) 
         so small, this close to the top, that the complementary modulus falls
         below 1e-300 (naming dtheta0): K = log(4/kc), hence the period, would
         lose its digits; use dtheta0 = 0 (balanced at the top) or
-        |dtheta0| >= 2e-300 omega0.
+        |dtheta0| >= 2e-300 omega0. For theta0 = +-5e-324 at rest (naming theta0):
+        the modulus sin(theta0 / 2) rounds to 0 while the state swings.
 
     Notes
     -----

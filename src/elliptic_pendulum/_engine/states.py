@@ -71,6 +71,10 @@ def _chunk(th, v, w0):
             "c1 = dtheta0**2 - 2 omega0**2 cos(theta0) would overflow (omega0 < 9e153)")
     _reject(bad, "dtheta0 and omega0 are too large together: the energy constant "
             "c1 = dtheta0**2 - 2 omega0**2 cos(theta0) would overflow")
+    # The smallest subnormal angle, +-5e-324, at rest: its half angle, hence the modulus
+    # k = sin(theta0/2), rounds to 0 while the state still swings; no double holds k.
+    _reject(elliptic & (st.k == 0), "theta0 is too small: the modulus sin(theta0 / 2) "
+            "underflows; |theta0| must be 0 or at least 1e-323 (or give dtheta0)")
     landen = _landen.constants(np.where(elliptic, st.mod_c, 1.0),
                                np.where(elliptic, st.mod_c_lo, 0.0))
     quarter = landen.quarter
