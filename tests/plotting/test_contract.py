@@ -2,8 +2,9 @@
 
 A figure function draws on the axes it is given and returns them, draws something, leaves
 matplotlib's rcParams as they were, and its text reads at 11 px or more once the figure is
-scaled to the book's column. A function added to FIGURES is held to all of this by default:
-it fails the first test below until it has an example call here, as the book calls it.
+scaled to the book's column, and at 9 px or more in a phone's. A function added to FIGURES
+is held to all of this by default: it fails the first test below until it has an example
+call here, as the book calls it.
 """
 
 from __future__ import annotations
@@ -25,6 +26,9 @@ import elliptic_pendulum.plotting as epp  # noqa: E402
 # came out at 7 px).
 COLUMN_PX = 672
 MIN_TEXT_PX = 11.0
+# On a phone the column is about 400 - 2 * 16 CSS pixels wide; text must stay at 9 px there.
+PHONE_COLUMN_PX = 368
+PHONE_MIN_TEXT_PX = 9.0
 
 _K = 0.9
 _U = np.linspace(-2, 2, 200) * float(ep.complete_integral(_K))
@@ -89,8 +93,9 @@ def _texts(ax):
     return [t for t in texts if t.get_text()]
 
 
-def _displayed_px(text, fig) -> float:
-    return text.get_fontsize() * 96 / 72 * min(1.0, COLUMN_PX / (96 * fig.get_figwidth()))
+def _displayed_px(text, fig, column=None) -> float:
+    column = COLUMN_PX if column is None else column
+    return text.get_fontsize() * 96 / 72 * min(1.0, column / (96 * fig.get_figwidth()))
 
 
 def test_every_figure_has_an_example_and_every_example_a_figure():
@@ -118,4 +123,13 @@ def test_every_text_reads_at_display_size(name):
     small = [f"{t.get_text()!r}: {_displayed_px(t, ax.figure):.1f} px"
              for ax in _axes_of(call(make())) for t in _texts(ax)
              if _displayed_px(t, ax.figure) < MIN_TEXT_PX]
+    assert small == []
+
+
+@pytest.mark.parametrize("name", epp.FIGURES)
+def test_every_text_reads_on_a_phone(name):
+    call, make = EXAMPLES[name]
+    small = [f"{t.get_text()!r}: {_displayed_px(t, ax.figure, PHONE_COLUMN_PX):.1f} px"
+             for ax in _axes_of(call(make())) for t in _texts(ax)
+             if _displayed_px(t, ax.figure, PHONE_COLUMN_PX) < PHONE_MIN_TEXT_PX]
     assert small == []

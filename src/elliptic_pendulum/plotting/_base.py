@@ -2,19 +2,23 @@
 
 A figure is shown scaled to the width of the page's text column, so text drawn at a fixed
 size in points shrinks with a wide figure: a 9-inch phase portrait with 8-point labels ends up
-with legends about 7 pixels high. Sizes here grow with the figure's width instead, so the
-smallest text (labels on curves) reads at 11-12 CSS pixels in the book's 672-pixel column.
-They are applied to the axes drawn on, never through rcParams: the library changes no
-global state.
+with legends about 7 pixels high. Sizes here grow with the figure's width instead. A figure of
+w inches is an SVG of 96 w pixels scaled to the column, so s points show at
+s * 96/72 * min(1, column / (96 w)) pixels; at 2 points per inch of width, the smallest text
+(0.9 of :func:`text_size`: tick labels, legends, labels on curves) reads at 9 px or more in a
+phone's column of 368 pixels and at about 17 px in the book's 672-pixel column. Sizes are
+applied to the axes drawn on, never through rcParams: the library changes no global state.
 """
 
 from __future__ import annotations
 
 from typing import Any
 
-#: Text size in points per inch of figure width, and the smallest size used.
-_POINTS_PER_INCH = 1.6
+#: Text size in points per inch of figure width, and the smallest size used. The smallest
+#: scale of text_size that a figure uses is SMALLEST_SCALE.
+_POINTS_PER_INCH = 2.0
 _MIN_POINTS = 11.0
+SMALLEST_SCALE = 0.9
 
 
 def new_axes(ax: Any = None, figsize: tuple[float, float] = (6.4, 4.2)) -> Any:
@@ -35,7 +39,7 @@ def text_size(ax: Any, scale: float = 1.0) -> float:
     >>> matplotlib.use("Agg")
     >>> import matplotlib.pyplot as plt
     >>> fig, ax = plt.subplots(figsize=(12, 4))
-    >>> text_size(ax) > text_size(plt.subplots(figsize=(6, 4))[1]) == 11.0
+    >>> text_size(ax) > text_size(plt.subplots(figsize=(5, 4))[1]) == 11.0
     True
     >>> plt.close("all")
     """
@@ -56,3 +60,4 @@ def readable(ax: Any) -> Any:
             text.set_fontsize(size * 0.9)
         legend.get_title().set_fontsize(size * 0.9)
     return ax
+

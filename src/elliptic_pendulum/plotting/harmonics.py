@@ -84,7 +84,7 @@ def plot_period_ratio(ax: Any = None, crossings: Sequence[float] = (2.0, 3.0, 4.
         ax.plot([0, a, a], [v, v, 0], ":", color="0.5", lw=1)
         # Left of the crossing, above its line, where the curve is still below that value.
         ax.annotate(rf"$R = {v:g}$ at $\theta_0 = {a:.1f}°$", (a - 3, v), ha="right",
-                    va="bottom", fontsize=text_size(ax, 0.85))
+                    va="bottom", fontsize=text_size(ax, 0.9))
     ax.plot(angles, values, "o", color="C1", label="crossings")
     ax.set_xlim(0, 180)
     ax.set_ylim(0, max(5.0, float(values.max()) + 1))

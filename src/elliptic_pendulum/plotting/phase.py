@@ -77,7 +77,7 @@ def _c1_text(value: float) -> str:
 
 def _inline(ax: Any, color: str) -> dict:
     """Keyword arguments of an inline curve label: centred on the curve, on a white patch."""
-    return dict(fontsize=text_size(ax, 0.8), color=color, ha="center", va="center",
+    return dict(fontsize=text_size(ax, 0.9), color=color, ha="center", va="center",
                 bbox=dict(boxstyle="round,pad=0.1", fc="white", ec="none", alpha=0.9))
 
 
