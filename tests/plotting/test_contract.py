@@ -285,3 +285,24 @@ def test_no_legend_covers_data(name):
                 if coll.get_transform() == ax.transData and _inside(box, xy).any():
                     hits.append(str(coll.get_label()))
     assert hits == []
+
+
+def test_the_animation_reads_on_a_phone_and_its_pendulums_fill_their_panel():
+    from elliptic_pendulum.animation import animate
+
+    anim = animate([ep.solve(0.0), ep.solve(2.0), ep.solve(0.0, 2.0), ep.solve(0.0, 2.6)],
+                   frames=2)
+    try:
+        fig = anim._fig
+        fig.canvas.draw()
+        small = [f"{t.get_text()!r}: {_displayed_px(t, fig, PHONE_COLUMN_PX):.1f} px"
+                 for ax in fig.axes for t in (_texts(ax) if ax.axison else ax.texts)
+                 if _displayed_px(t, fig, PHONE_COLUMN_PX) < PHONE_MIN_TEXT_PX]
+        assert small == []
+        # A rod (length 1) spans at least 8 % of the figure's width (it was 5 %).
+        pendulums = fig.axes[0]
+        (x0, _), (x1, _) = pendulums.transData.transform([(0.0, 0.0), (1.0, 0.0)])
+        assert (x1 - x0) / fig.bbox.width >= 0.08
+    finally:
+        anim._draw_was_started = True
+        plt.close(anim._fig)
