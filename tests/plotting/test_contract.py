@@ -2,8 +2,9 @@
 
 A figure function draws on the axes it is given and returns them, draws something, leaves
 matplotlib's rcParams as they were, and its text reads at 11 px or more once the figure is
-scaled to the book's column. A function added to FIGURES is held to all of this by default:
-it fails the first test below until it has an example call here, as the book calls it.
+scaled to the book's column, and at 9 px or more in a phone's. A function added to FIGURES
+is held to all of this by default: it fails the first test below until it has an example
+call here, as the book calls it.
 """
 
 from __future__ import annotations
@@ -25,6 +26,9 @@ import elliptic_pendulum.plotting as epp  # noqa: E402
 # came out at 7 px).
 COLUMN_PX = 672
 MIN_TEXT_PX = 11.0
+# On a phone the column is about 400 - 2 * 16 CSS pixels wide; text must stay at 9 px there.
+PHONE_COLUMN_PX = 368
+PHONE_MIN_TEXT_PX = 9.0
 
 _K = 0.9
 _U = np.linspace(-2, 2, 200) * float(ep.complete_integral(_K))
@@ -89,8 +93,9 @@ def _texts(ax):
     return [t for t in texts if t.get_text()]
 
 
-def _displayed_px(text, fig) -> float:
-    return text.get_fontsize() * 96 / 72 * min(1.0, COLUMN_PX / (96 * fig.get_figwidth()))
+def _displayed_px(text, fig, column=None) -> float:
+    column = COLUMN_PX if column is None else column
+    return text.get_fontsize() * 96 / 72 * min(1.0, column / (96 * fig.get_figwidth()))
 
 
 def test_every_figure_has_an_example_and_every_example_a_figure():
@@ -119,3 +124,185 @@ def test_every_text_reads_at_display_size(name):
              for ax in _axes_of(call(make())) for t in _texts(ax)
              if _displayed_px(t, ax.figure) < MIN_TEXT_PX]
     assert small == []
+
+
+@pytest.mark.parametrize("name", epp.FIGURES)
+def test_every_text_reads_on_a_phone(name):
+    call, make = EXAMPLES[name]
+    small = [f"{t.get_text()!r}: {_displayed_px(t, ax.figure, PHONE_COLUMN_PX):.1f} px"
+             for ax in _axes_of(call(make())) for t in _texts(ax)
+             if _displayed_px(t, ax.figure, PHONE_COLUMN_PX) < PHONE_MIN_TEXT_PX]
+    assert small == []
+
+
+# The book's figures whose layout a reader reported, as their cells draw them (the cover and
+# the phase portrait of the energy chapter, Lemma 2's extensions, the four swings in time).
+def _extensions():
+    a = 0.8
+    axes = plt.subplots(2, 1, figsize=(6.4, 7.6), layout="constrained")[1]
+    epp.plot_extension(lambda v: ep.inverse_integral(v, a), float(ep.complete_integral(a)),
+                       ax=axes[0])
+    epp.plot_extension(np.sin, 1.0, ax=axes[1])
+    return axes
+
+
+def _swings():
+    motions = [ep.solve(np.radians(d)) for d in (30, 90, 150, 179)]
+    t = np.linspace(0.0, 2 * motions[-1].period, 1201)
+    axes = plt.subplots(2, 1, figsize=(7, 5.5), sharex=True, layout="constrained")[1]
+    return epp.plot_motion(motions, t, axes=axes,
+                           labels=[f"$\\theta_0 = {d}°$" for d in (30, 90, 150, 179)])
+
+
+def _constrained(axes):
+    """The axes of an example, in a constrained layout: the figure as the book lays it out."""
+    _axes_of(axes)[0].figure.set_layout_engine("constrained")
+    return axes
+
+
+LAYOUTS = {
+    **{name: (lambda call=call, make=make: call(_constrained(make()))) for name, (call, make)
+       in EXAMPLES.items()},
+    "cover": lambda: epp.plot_phase_portrait(
+        ax=plt.subplots(figsize=(8, 4), layout="constrained")[1]),
+    "phase portrait, constrained": lambda: epp.plot_phase_portrait(
+        ax=plt.subplots(figsize=(9, 5), layout="constrained")[1]),
+    "extensions": _extensions,
+    "swings": _swings,
+}
+
+
+def _drawn(make):
+    axes = _axes_of(make())
+    fig = axes[0].figure
+    fig.canvas.draw()
+    return fig, axes, fig.canvas.get_renderer()
+
+
+def _drawn_tick(ax, text, kind) -> bool:
+    """False for a tick label outside the view: it exists, but matplotlib does not draw it."""
+    if kind is None:
+        return True
+    axis = ax.xaxis if kind == "x" else ax.yaxis
+    lo, hi = sorted(axis.get_view_interval())
+    tol = 1e-9 * max(1.0, abs(hi - lo))
+    value = text.get_position()[0 if kind == "x" else 1]
+    trans = axis.get_transform()
+    if value != value or not np.isfinite(trans.transform([value])[0]):
+        return False
+    a, b, v = trans.transform([lo, hi, value])
+    return min(a, b) - tol <= v <= max(a, b) + tol
+
+
+def _boxes(axes, renderer, kinds=False):
+    """(text, window extent) of every text of the axes, legends' entries included; with
+    ``kinds``, (text, extent, "x" or "y" for a tick label, else "")."""
+    out = []
+    for ax in axes:
+        ticks = {id(t): k for k, labels in (("x", ax.get_xticklabels()),
+                                            ("y", ax.get_yticklabels())) for t in labels}
+        for t in _texts(ax):
+            if t.get_visible() and _drawn_tick(ax, t, ticks.get(id(t))):
+                box = t.get_window_extent(renderer)
+                out.append((t.get_text(), box, ticks.get(id(t), "")) if kinds else
+                           (t.get_text(), box))
+    return out
+
+
+def _overlap(a, b) -> bool:
+    return a.x0 < b.x1 and b.x0 < a.x1 and a.y0 < b.y1 and b.y0 < a.y1
+
+
+def _line_points(ax, line, every=2.0):
+    """A line's vertices in pixels, and points every few pixels between them when it is drawn."""
+    xy = ax.transData.transform(np.column_stack([np.asarray(v, float) for v in line.get_data()]))
+    xy = xy[np.all(np.isfinite(xy), axis=1)] if line.get_linestyle() in ("None", "none") else xy
+    pts = [xy[np.all(np.isfinite(xy), axis=1)]]
+    if line.get_linestyle() not in ("None", "none") and len(xy) > 1:
+        for a, b in zip(xy[:-1], xy[1:], strict=True):
+            if np.all(np.isfinite(a)) and np.all(np.isfinite(b)):
+                n = int(np.hypot(*(b - a)) // every) + 1
+                pts.append(a + np.linspace(0, 1, n + 1)[1:-1, None] * (b - a))
+    return np.concatenate(pts)
+
+
+def _inside(box, points, margin=0.0):
+    return ((points[:, 0] > box.x0 - margin) & (points[:, 0] < box.x1 + margin)
+            & (points[:, 1] > box.y0 - margin) & (points[:, 1] < box.y1 + margin))
+
+
+@pytest.mark.parametrize("name", LAYOUTS)
+def test_no_text_covers_another(name):
+    _, axes, renderer = _drawn(LAYOUTS[name])
+    boxes = _boxes(axes, renderer, kinds=True)
+    # An x and a y tick label may touch at a corner of the axes, as matplotlib draws them.
+    hits = [(s, t) for i, (s, a, k) in enumerate(boxes) for t, b, m in boxes[i + 1:]
+            if _overlap(a, b) and {k, m} != {"x", "y"}]
+    assert hits == []
+
+
+@pytest.mark.parametrize("name", LAYOUTS)
+def test_no_text_covers_an_arrow_or_a_marker(name):
+    _, axes, renderer = _drawn(LAYOUTS[name])
+    boxes = _boxes(axes, renderer)
+    hits = []
+    for ax in axes:
+        for ann in ax.texts:
+            patch = getattr(ann, "arrow_patch", None)
+            if patch is None:
+                continue
+            tip = ax.transData.transform([ann.xy])
+            head = patch.get_window_extent(renderer)
+            hits += [(s, "arrow") for s, box in boxes
+                     if s != ann.get_text() and (_inside(box, tip).any() or _overlap(box, head))]
+        for line in ax.lines:
+            if line.get_marker() in (None, "None", "none", "") or line.get_transform() \
+                    is not ax.transData:
+                continue
+            centres = _line_points(ax, line, every=np.inf)
+            half = line.get_markersize() / 2 * ax.figure.dpi / 72
+            hits += [(s, f"marker of {line.get_label()}") for s, box in boxes
+                     if _inside(box, centres, half).any()]
+    assert hits == []
+
+
+@pytest.mark.parametrize("name", LAYOUTS)
+def test_no_legend_covers_data(name):
+    _, axes, renderer = _drawn(LAYOUTS[name])
+    hits = []
+    for ax in axes:
+        legend = ax.get_legend()
+        if legend is None:
+            continue
+        box = legend.get_window_extent(renderer)
+        for line in ax.lines:
+            if line.get_transform() is ax.transData and line.get_visible():
+                if _inside(box, _line_points(ax, line)).any():
+                    hits.append(line.get_label())
+        for coll in ax.collections:
+            for path in coll.get_paths():
+                xy = coll.get_transform().transform(path.vertices)
+                if coll.get_transform() == ax.transData and _inside(box, xy).any():
+                    hits.append(str(coll.get_label()))
+    assert hits == []
+
+
+def test_the_animation_reads_on_a_phone_and_its_pendulums_fill_their_panel():
+    from elliptic_pendulum.animation import animate
+
+    anim = animate([ep.solve(0.0), ep.solve(2.0), ep.solve(0.0, 2.0), ep.solve(0.0, 2.6)],
+                   frames=2)
+    try:
+        fig = anim._fig
+        fig.canvas.draw()
+        small = [f"{t.get_text()!r}: {_displayed_px(t, fig, PHONE_COLUMN_PX):.1f} px"
+                 for ax in fig.axes for t in (_texts(ax) if ax.axison else ax.texts)
+                 if _displayed_px(t, fig, PHONE_COLUMN_PX) < PHONE_MIN_TEXT_PX]
+        assert small == []
+        # A rod (length 1) spans at least 8 % of the figure's width (it was 5 %).
+        pendulums = fig.axes[0]
+        (x0, _), (x1, _) = pendulums.transData.transform([(0.0, 0.0), (1.0, 0.0)])
+        assert (x1 - x0) / fig.bbox.width >= 0.08
+    finally:
+        anim._draw_was_started = True
+        plt.close(anim._fig)

@@ -1,8 +1,8 @@
 r"""The pendulum in motion: an animation of pendulums beside their points on the phase plane.
 
 For the chapter "the pendulum in motion". :func:`animate` draws, for each given
-:class:`~elliptic_pendulum.motion.Motion`, a pendulum (rod and bob, pivots side by side) in the left
-panel and, in the right panel, its point moving along its curve (9) in the :math:`(\theta,
+:class:`~elliptic_pendulum.motion.Motion`, a pendulum (rod and bob, pivots side by side) in the top
+panel and, in the bottom panel, its point moving along its curve (9) in the :math:`(\theta,
 \theta')` plane, with the separatrix :math:`\theta' = \pm 2\omega_0\cos(\theta/2)` for reference;
 angles on the phase plane are reduced to :math:`(-\pi, \pi]`. The frames come from the closed form,
 so a rotation keeps turning and a swing near the separatrix lingers at the top as it should.
@@ -28,6 +28,7 @@ import numpy as np
 
 from .._validation import positive_scalar
 from ..motion import Motion
+from ._base import legend_below, readable, text_size
 
 __all__ = ["animate", "animation_html"]
 
@@ -126,10 +127,17 @@ def animate(motions: Motion | Sequence[Motion], duration: float | None = None, f
     states = [(m.theta(times), m.dtheta(times)) for m in motions]
     spacing = 2.5  # pivots side by side, one rod length and a margin apart
 
-    fig, (left, right) = plt.subplots(1, 2, figsize=(10, 4.6))
+    # The pendulums in a row above the phase plane, their panel fitted to the rods (length 1)
+    # with a small margin for the bobs and the regimes' names: large enough to watch.
+    margin = 0.2
+    xlim = (-1 - margin, spacing * (len(motions) - 1) + 1 + margin)
+    ylim = (-1 - margin, 1.35)
+    fig = plt.figure(figsize=(8, 6.8), layout="constrained")
+    left, right = fig.subplots(2, 1, height_ratios=[(ylim[1] - ylim[0]) / (xlim[1] - xlim[0]),
+                                                    0.5])
     left.set_aspect("equal")
-    left.set_xlim(-1.3, spacing * (len(motions) - 1) + 1.3)
-    left.set_ylim(-1.3, 1.3)
+    left.set_xlim(*xlim)
+    left.set_ylim(*ylim)
     left.set_axis_off()
     w0 = max(m.omega0 for m in motions)
     grid = np.linspace(-math.pi, math.pi, 401)
@@ -146,9 +154,10 @@ def animate(motions: Motion | Sequence[Motion], duration: float | None = None, f
     for i, m in enumerate(motions):
         colour, x0 = _COLOURS[i], spacing * i
         left.plot([x0], [0.0], "k.", ms=4)
-        left.text(x0, 1.15, f"{m.regime.value}", ha="center", color=colour)
+        left.text(x0, 1.1, f"{m.regime.value}", ha="center", va="bottom", color=colour,
+                  fontsize=text_size(left))
         rods.append(left.plot([], [], color=colour, lw=2)[0])
-        bobs.append(left.plot([], [], "o", color=colour, ms=10)[0])
+        bobs.append(left.plot([], [], "o", color=colour, ms=14)[0])
         # the curve traced over the whole duration, faintly and densely sampled, broken where the
         # reduced angle jumps by 2 pi
         dense = np.linspace(0.0, end, 1501)
@@ -157,9 +166,8 @@ def animate(motions: Motion | Sequence[Motion], duration: float | None = None, f
         right.plot(np.where(jumps, np.nan, wrapped), speed, color=colour, lw=1, alpha=0.5,
                    label=f"{m.regime.name.lower()} ({m.regime.value})")
         points.append(right.plot([], [], "o", color=colour, ms=7)[0])
-    right.legend(loc="upper center", bbox_to_anchor=(0.5, -0.16), ncol=3, fontsize="small",
-                 frameon=False)
-    fig.tight_layout()
+    readable(right)
+    legend_below(right, ncol=3, frameon=False)
 
     def draw(j: int) -> list[Any]:
         for i, (theta, dtheta) in enumerate(states):

@@ -16,7 +16,7 @@ import numpy as np
 from ..mechanics.rod import Pendulum
 from ..mechanics.string import free_flight, string_stays_taut
 from ..motion import solve
-from ._base import new_axes, readable, text_size
+from ._base import legend_below, new_axes, place_legend, readable
 from .phase import plot_phase_portrait
 
 __all__ = ["plot_tension", "plot_string_flight", "plot_string_phase_plane", "tension_plot",
@@ -91,7 +91,7 @@ def plot_tension(theta0: float, omega0: float = 1.0, ax: Any = None) -> Any:
     ax.set_xlabel(r"time $t$ / period (released at $t = 0$ from $\theta_0$)")
     ax.set_ylabel(r"$T/(mg)$")
     ax.set_title(rf"$\theta_0 = {math.degrees(theta0):.0f}°$")
-    ax.legend(loc="upper center", ncol=2)
+    place_legend(ax, loc="upper center", ncol=2)
     return readable(ax)
 
 
@@ -180,7 +180,7 @@ def plot_string_flight(theta0: float, dtheta0: float, omega0: float = 1.0, ax: A
     start = (rf"$\theta(0) = {math.degrees(float(theta0)):g}°$, " if theta0 != 0 else "kick ")
     ax.set_title(start + rf"$\theta'(0) = {w:g}\,\omega_0$")
     if legend:
-        ax.legend(loc="upper left", framealpha=0.9)
+        place_legend(ax, loc="upper left", framealpha=0.9)
     return readable(ax)
 
 
@@ -255,9 +255,9 @@ def plot_string_phase_plane(omega0: float = 1.0, ax: Any = None) -> Any:
     handles += [Line2D([], [], color=c, lw=1.2, label=t) for c, t in (
         ("C0", "swings"), ("C3", "separatrix"), ("C2", "rotations"))]
     handles.append(Line2D([], [], color="C3", marker="o", ls="none", label="rest"))
-    ax.legend(handles=handles, loc="upper center", bbox_to_anchor=(0.5, -0.12), ncol=5,
-              frameon=False, fontsize=text_size(ax, 0.9))
-    return readable(ax)
+    readable(ax)
+    legend_below(ax, handles=handles, ncol=5, frameon=False)
+    return ax
 
 
 # The names of earlier releases.

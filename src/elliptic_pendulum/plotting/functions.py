@@ -18,7 +18,7 @@ import numpy.typing as npt
 
 from ..elliptic import am, complete_integral, incomplete_integral, inverse_integral, jacobi
 from ..extension import periodic_extension, staircase_extension
-from ._base import new_axes, readable
+from ._base import legend_below, new_axes, place_legend, readable
 
 __all__ = ["plot_jacobi", "plot_integral", "plot_inverse", "plot_amplitude", "plot_extension",
            "extension_plot"]
@@ -36,7 +36,7 @@ def plot_jacobi(k: float, u: npt.ArrayLike, ax: Any = None, kc: float | None = N
     for j in range(int(u.min() // K), int(u.max() // K) + 1):
         ax.axvline(j * K, color="0.85", lw=0.8, zorder=0)
     ax.set_xlabel("$u$ (grey lines: multiples of $K_1$)")
-    ax.legend()
+    place_legend(ax)
     return readable(ax)
 
 
@@ -48,7 +48,7 @@ def plot_integral(moduli: Sequence[float] = (0.5, 0.9, 0.99), ax: Any = None) ->
     for k in moduli:
         ax.plot(z, incomplete_integral(z, k), label=rf"$E_1(z, {k:g})$")
     ax.set_xlabel("$z$")
-    ax.legend()
+    place_legend(ax, loc="upper left")
     return readable(ax)
 
 
@@ -62,7 +62,7 @@ def plot_inverse(moduli: Sequence[float] = (0.5, 0.9, 0.99), ax: Any = None) -> 
         u = np.linspace(-K, K, 401)
         ax.plot(u, inverse_integral(u, k), label=rf"$G(u, {k:g})$")
     ax.set_xlabel("$u$")
-    ax.legend()
+    place_legend(ax, loc="upper left")
     return readable(ax)
 
 
@@ -79,7 +79,7 @@ def plot_amplitude(k: float, u: npt.ArrayLike, ax: Any = None) -> Any:
     ax.plot(u, tau * u, "--", label=r"$\tau u$")
     ax.plot(u, a - tau * u, label=r"$\hat I - \tau u$ (periodic)")
     ax.set_xlabel("$u$")
-    ax.legend()
+    place_legend(ax, loc="upper left")
     return readable(ax)
 
 
@@ -151,9 +151,10 @@ def plot_extension(f: Callable, a: float, kind: str = "odd", ax: Any = None,
     ax.plot(joints, g(joints), "o", color="C3", ms=5, label=r"joints $x = \pm a, \pm 3a, \ldots$")
     ax.set_xlim(x[0], x[-1])
     ax.set_xlabel("$x$")
-    # Below the axes: any corner inside may cover the extension.
-    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.15), ncol=2, frameon=False)
-    return readable(ax)
+    # Below the x label: any corner inside may cover the extension.
+    readable(ax)
+    legend_below(ax, ncol=2, frameon=False)
+    return ax
 
 
 # The names of earlier releases.

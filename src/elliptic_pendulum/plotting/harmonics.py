@@ -20,7 +20,7 @@ from ..motion import solve
 from ..periods.approximations import ratio_approximations
 from ..periods.period import agm_period, crossing_angle, period, period_ratio
 from ..periods.series import fourier_coefficients
-from ._base import new_axes, readable, text_size
+from ._base import legend_below, new_axes, place_legend, readable, text_size
 
 __all__ = ["plot_period_ratio", "plot_approximation_error", "plot_harmonics", "period_ratio_plot",
            "approximation_error_plot", "harmonics_plot"]
@@ -84,14 +84,14 @@ def plot_period_ratio(ax: Any = None, crossings: Sequence[float] = (2.0, 3.0, 4.
         ax.plot([0, a, a], [v, v, 0], ":", color="0.5", lw=1)
         # Left of the crossing, above its line, where the curve is still below that value.
         ax.annotate(rf"$R = {v:g}$ at $\theta_0 = {a:.1f}°$", (a - 3, v), ha="right",
-                    va="bottom", fontsize=text_size(ax, 0.85))
+                    va="bottom", fontsize=text_size(ax, 0.9))
     ax.plot(angles, values, "o", color="C1", label="crossings")
     ax.set_xlim(0, 180)
     ax.set_ylim(0, max(5.0, float(values.max()) + 1))
     ax.set_xticks(range(0, 181, 30))
     ax.set_xlabel(r"amplitude $\theta_0$ (degrees)")
     ax.set_ylabel(r"$R = T / T_0$")
-    ax.legend(loc="upper left")
+    place_legend(ax, loc="upper left")
     return readable(ax)
 
 
@@ -152,15 +152,16 @@ def plot_approximation_error(ax: Any = None, amplitudes: npt.ArrayLike | None = 
         color, ls = _STYLES[label]
         ax.plot(x / math.pi, np.where(err > 0, err, np.nan), color=color, ls=ls, label=label)
     ax.set_xscale("logit")
-    ticks = [1, 10, 90, 170, 179, 179.9, 179.99, 179.999]
+    ticks = [1, 10, 90, 170, 179, 179.9, 179.999]  # 179.99 would run into its neighbours
     ax.set_xticks([d / 180 for d in ticks], [f"{d:g}°" for d in ticks])
     ax.xaxis.set_minor_locator(NullLocator())
     ax.set_yscale("log")
     ax.set_ylim(1e-16, 10)
     ax.set_xlabel(r"amplitude $\theta_0$")
     ax.set_ylabel(r"relative error $|\tilde R/R - 1|$")
-    ax.legend(ncol=5, loc="upper center", bbox_to_anchor=(0.5, -0.14), frameon=False)
-    return readable(ax)
+    readable(ax)
+    legend_below(ax, ncol=5, frameon=False)
+    return ax
 
 
 def _fft_coefficients(theta0: float, n: int, samples: int) -> np.ndarray:
@@ -241,13 +242,14 @@ def plot_harmonics(amplitudes_deg: Sequence[float], n: int = 12, axes: Any = Non
     ax2.plot([], [], "x", color="k", label="FFT")
     ax1.set_xlabel(r"$t/T$ from the upward passage")
     ax1.set_ylabel(r"$\theta/\theta_0$")
-    ax1.legend(title="amplitude")
     ax2.set_xlabel(r"harmonic $2j + 1$")
     ax2.set_ylabel(r"$b_j / b_0$")
     ax2.set_ylim(1e-16, 2)
-    ax2.legend()
     for ax in axes:
         readable(ax)
+    # Once both panels are drawn, the right one first: a legend beside it narrows the left one.
+    place_legend(ax2)
+    place_legend(ax1, title="amplitude")
     return axes
 
 

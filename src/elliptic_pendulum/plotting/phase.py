@@ -15,7 +15,7 @@ import numpy.typing as npt
 
 from ..motion import Motion, solve
 from ..numerics import integrate
-from ._base import new_axes, readable, text_size
+from ._base import layout, legend_below, new_axes, place_legend, readable, text_size
 
 __all__ = ["plot_pendulum", "plot_phase_portrait", "plot_motion", "pendulum_sketch",
            "phase_portrait"]
@@ -46,15 +46,20 @@ def plot_pendulum(theta: float = 0.55, ax: Any = None) -> Any:
     arc = np.linspace(0, theta, 40)
     ax.plot(0.3 * np.sin(arc), -0.3 * np.cos(arc), color="C3")
     big = text_size(ax, 1.3)
-    ax.annotate(r"$\theta$", (0.32 * math.sin(theta / 2), -0.36 * math.cos(theta / 2)),
-                color="C3", fontsize=big)
+    # Labels beside what they name, clear of the arrows and of one another: the angle beyond
+    # its arc, T and l right of the rod (across its normal n), the weight right of its arrow.
+    nx, ny = math.cos(theta), math.sin(theta)
+    centred = dict(ha="center", va="center", fontsize=big)
+    ax.annotate(r"$\theta$", (0.45 * math.sin(theta / 2), -0.45 * math.cos(theta / 2)),
+                color="C3", **centred)
     ax.annotate("", xy=(0.62 * x, 0.62 * y), xytext=(x, y),
                 arrowprops=dict(arrowstyle="->", color="C2", lw=2))
-    ax.annotate(r"$\mathbf{T}$", (0.7 * x + 0.05, 0.7 * y), color="C2", fontsize=big)
+    ax.annotate(r"$\mathbf{T}$", (0.8 * x + 0.17 * nx, 0.8 * y + 0.17 * ny), color="C2",
+                **centred)
     ax.annotate("", xy=(x, y - 0.4), xytext=(x, y),
                 arrowprops=dict(arrowstyle="->", color="C1", lw=2))
     ax.annotate(r"$mg$", (x + 0.05, y - 0.35), color="C1", fontsize=big)
-    ax.annotate(r"$\ell$", (0.5 * x - 0.1, 0.5 * y), fontsize=big)
+    ax.annotate(r"$\ell$", (0.4 * x + 0.13 * nx, 0.4 * y + 0.13 * ny), **centred)
     ax.annotate(r"$(x, y)$", (x + 0.1, y + 0.05), fontsize=text_size(ax, 1.1))
     ax.set_xlim(-0.8, 1.2)
     ax.set_ylim(-1.6, 0.3)
@@ -77,18 +82,19 @@ def _c1_text(value: float) -> str:
 
 def _inline(ax: Any, color: str) -> dict:
     """Keyword arguments of an inline curve label: centred on the curve, on a white patch."""
-    return dict(fontsize=text_size(ax, 0.8), color=color, ha="center", va="center",
+    return dict(fontsize=text_size(ax, 0.9), color=color, ha="center", va="center",
                 bbox=dict(boxstyle="round,pad=0.1", fc="white", ec="none", alpha=0.9))
 
 
-def _arrowhead(ax: Any, th: np.ndarray, dth: np.ndarray, i: int, color: str) -> None:
+def _arrowhead(ax: Any, th: np.ndarray, dth: np.ndarray, i: int, color: str) -> Any:
     """Draw an arrowhead on the curve at sample i, pointing to sample i + 1.
 
     The samples are in time order, so the head shows the direction of the motion itself.
     """
-    ax.annotate("", xy=(th[i + 1], dth[i + 1]), xytext=(th[i], dth[i]),
-                arrowprops=dict(arrowstyle="-|>", color=color, lw=0,
-                                mutation_scale=text_size(ax, 1.4), shrinkA=0, shrinkB=0))
+    return ax.annotate("", xy=(th[i + 1], dth[i + 1]), xytext=(th[i], dth[i]),
+                       arrowprops=dict(arrowstyle="-|>", color=color, lw=0,
+                                       mutation_scale=text_size(ax, 1.4), shrinkA=0,
+                                       shrinkB=0))
 
 
 def _visible(th: np.ndarray, dth: np.ndarray, view: Any) -> np.ndarray:
@@ -96,28 +102,66 @@ def _visible(th: np.ndarray, dth: np.ndarray, view: Any) -> np.ndarray:
     return (th >= x0) & (th <= x1) & (dth >= y0) & (dth <= y1)
 
 
-def _arrowheads_in_view(ax: Any, drawn: dict, view: Any) -> None:
+#: Where an arrowhead goes along the visible part of a curve (as a fraction of its theta range,
+#: where it moves right; 1 - that where it moves left): the first place clear of every label.
+_ALONG = (0.85, 0.75, 0.95, 0.65, 0.55, 0.45, 0.35, 0.25)
+
+
+def _same_curve(a: tuple, b: tuple) -> bool:
+    """Whether two (shift, theta, ...) entries are copies of one curve, 2 pi k apart."""
+    return len(a[1]) == len(b[1]) and bool(np.allclose(a[1] - a[0], b[1] - b[0]))
+
+
+def _arrowheads_in_view(ax: Any, drawn: dict, view: Any, labels: Sequence[Any] = ()) -> None:
     """Draw one arrowhead on each half (theta' > 0, < 0) of the curves in view.
 
-    Only the copy nearest the centre of the view gets them, on its visible part: 85 % of the
-    way along where it moves right, 15 % where it moves left (clear of the labels at theta = 0
-    and pi).
+    On the copy nearest the centre of the view, on its visible part: 85 % of the way along
+    where it moves right, 15 % where it moves left, or the nearest place to that (see _ALONG)
+    where the head covers none of the ``labels`` as the figure is laid out; failing that, on
+    the next copy.
     """
+    renderer = layout(ax)
+    pad = text_size(ax) * ax.figure.dpi / 72 * 0.2
+    boxes = [t.get_window_extent(renderer).padded(pad) for t in labels]
     centre = sum(view[0]) / 2
     for regime in ("II", "III", "IV"):
         if not drawn[regime]:
             continue
-        nearest = min({c[0] for c in drawn[regime]}, key=lambda s: abs(s - centre))
-        for shift, th, dth, color in drawn[regime]:
-            if shift != nearest:
-                continue
-            for sign, frac in ((1, 0.85), (-1, 0.15)):
-                idx = np.flatnonzero(_visible(th, dth, view) & (sign * dth > 0))
-                if len(idx) < 2:
+        copies = sorted({c[0] for c in drawn[regime]}, key=lambda s: (abs(s - centre), s))
+        for sign in (1, -1):
+            places = []  # (theta, theta', sample) in the order tried
+            for copy in copies:
+                for shift, th, dth, color in drawn[regime]:
+                    if shift != copy:
+                        continue
+                    idx = np.flatnonzero(_visible(th, dth, view) & (sign * dth > 0))
+                    if len(idx) < 2:
+                        continue
+                    lo, hi = th[idx].min(), th[idx].max()
+                    for along in _ALONG:
+                        frac = along if sign > 0 else 1 - along
+                        i = idx[np.argmin(np.abs(th[idx] - (lo + frac * (hi - lo))))]
+                        places.append((shift, th, dth, color, int(min(i, len(th) - 2))))
+            # every curve of the regime on the nearest copy with a free place for it
+            done: set[int] = set()
+            for shift, th, dth, color, i in places:
+                key = id(th)
+                if key in done:
                     continue
-                lo, hi = th[idx].min(), th[idx].max()
-                i = idx[np.argmin(np.abs(th[idx] - (lo + frac * (hi - lo))))]
-                _arrowhead(ax, th, dth, int(min(i, len(th) - 2)), color)
+                head = _arrowhead(ax, th, dth, i, color)
+                head.update_positions(renderer)
+                extent = head.arrow_patch.get_window_extent(renderer)
+                if any(extent.overlaps(box) for box in boxes):
+                    head.remove()
+                    continue
+                # this curve has its head; so has its twin on every other copy
+                done.update(id(c[1]) for c in drawn[regime] if _same_curve(c, (shift, th)))
+            for shift, th, dth, color in drawn[regime]:  # no free place anywhere: the first
+                if id(th) not in done and shift == copies[0]:
+                    first = [p for p in places if p[1] is th]
+                    if first:
+                        _arrowhead(ax, th, dth, first[0][4], color)
+                        done.update(id(c[1]) for c in drawn[regime] if _same_curve(c, (shift, th)))
 
 
 def plot_phase_portrait(omega0: float = 1.0, ax: Any = None,
@@ -193,21 +237,16 @@ def plot_phase_portrait(omega0: float = 1.0, ax: Any = None,
         handles.setdefault(regime, line)
         drawn[regime].append((shift, np.atleast_1d(th), np.atleast_1d(dth), color))
 
+    rest_ms = 5.0
     for s in shifts:
-        curve("I", [s], [0], "C3", marker="o", ls="none", ms=5)
-    if label:
-        ax.annotate(_c1_text(-2.0), (0.0, -0.12), **dict(_inline(ax, "C3"), va="top"))
-    for i, deg in enumerate(amplitudes_deg):
+        curve("I", [s], [0], "C3", marker="o", ls="none", ms=rest_ms)
+    swings = []  # (c1 / w0^2, largest theta') of each swing, for its label
+    for deg in amplitudes_deg:
         m = solve(math.radians(deg), 0.0, omega0)
         th, dth = _orbit(m)
         for s in shifts:
             curve("II", th + s, dth, "C0", s, lw=1)
-        if label:
-            # Inline labels at theta = 0, alternately on the upper and the lower half of the
-            # curves: near the separatrix the curves are too close for one label above another.
-            side = 1 if i % 2 == 0 else -1
-            ax.annotate(_c1_text(m.energy_constant / w2), (0.0, side * dth.max()),
-                        **_inline(ax, "C0"))
+        swings.append((m.energy_constant / w2, float(dth.max())))
     # The separatrix: theta = 2 gd(w0 t) from theta = -pi to pi, both branches. The lower one,
     # theta = -2 gd(w0 t), is the upper one's samples in reverse order with theta' negated.
     x = np.linspace(-12, 12, 800)
@@ -223,13 +262,6 @@ def plot_phase_portrait(omega0: float = 1.0, ax: Any = None,
             th, dth = m.theta(t), m.dtheta(t)
             keep = np.abs(th) <= window
             curve("IV", th[keep], dth[keep], "C2", lw=1)
-        if label:
-            c1 = solve(0.0, 2 * omega0 * kick, omega0).energy_constant / w2
-            ax.annotate(_c1_text(c1), (math.pi, 2 * omega0 * math.sqrt((kick ** 2) - 1)),
-                        **_inline(ax, "C2"))
-    if label:  # the separatrix, on the copy left of the centre when the window shows it
-        ax.annotate(_c1_text(2.0), (-2 * math.pi if window >= 2 * math.pi else 0.0, 2 * omega0),
-                    **_inline(ax, "C3"))
     ax.set_xlim(*(xlim or (-window, window)))
     if ylim is not None:
         ax.set_ylim(*ylim)
@@ -241,17 +273,65 @@ def plot_phase_portrait(omega0: float = 1.0, ax: Any = None,
     if xlim is not None:
         ax.set_xlim(*xlim)  # set_xticks may widen the view to its ticks
     view = (ax.get_xlim(), ax.get_ylim())
-    if arrows:
-        _arrowheads_in_view(ax, drawn, view)
     shown = [r for r, curves in drawn.items()
              if any(np.any(_visible(th, dth, view)) for _, th, dth, _ in curves)]
     notes = ([r"labels on the curves: $c_1/\omega_0^2$"] if label else []) + (
         ["arrows: direction of motion"] if arrows else [])
-    # Below the axes, in one row: inside, it would hide the rotations' curves.
-    ax.legend([handles[r] for r in shown], shown, loc="upper center",
-              bbox_to_anchor=(0.5, -0.14), ncol=4, frameon=False,
-              title="regime" + (" (" + "; ".join(notes) + ")" if notes else ""))
-    return readable(ax)
+    readable(ax)
+    # Below the x label, in one row: inside, it would hide the rotations' curves.
+    legend_below(ax, [handles[r] for r in shown], shown, ncol=4, frameon=False,
+                 title="regime" + (" (" + "; ".join(notes) + ")" if notes else ""))
+    labels = _label_curves(ax, swings, kicks, omega0, shifts, rest_ms) if label else []
+    if arrows:
+        _arrowheads_in_view(ax, drawn, view, labels)
+    return ax
+
+
+def _label_curves(ax: Any, swings: Sequence[tuple[float, float]], kicks: Sequence[float],
+                  omega0: float, shifts: np.ndarray, rest_ms: float) -> list[Any]:
+    """Write c1 / w0^2 on the curves of the phase portrait; return the labels.
+
+    No label covers another or a rest point.
+
+    The rest at the bottom just below its point; the rotations at theta = pi, where they come
+    closest to the axis; the separatrix at its top on the copy left of the centre (at 0 when
+    the window holds one copy). Each swing at theta = 0, on the upper and the lower half of
+    the curves in turn; near the separatrix the curves are too close for one label above
+    another, so a label that would cover one already written, or a rest point, moves to the
+    other half, then to the copies at 2 pi and -2 pi, as laid out.
+    """
+    labels = [ax.annotate(_c1_text(-2.0), (0.0, 0.0), xytext=(0.0, -(rest_ms / 2 + 4)),
+                          textcoords="offset points", **dict(_inline(ax, "C3"), va="top"))]
+    for kick in kicks:
+        c1 = solve(0.0, 2 * omega0 * kick, omega0).energy_constant / omega0 ** 2
+        labels.append(ax.annotate(_c1_text(c1), (math.pi, 2 * omega0 * math.sqrt(kick ** 2 - 1)),
+                                  **_inline(ax, "C2")))
+    copies = [0.0] + [c for c in (2 * math.pi, -2 * math.pi) if np.any(np.isclose(shifts, c))]
+    labels.append(ax.annotate(_c1_text(2.0), (-2 * math.pi if len(copies) > 1 else 0.0,
+                                              2 * omega0), **_inline(ax, "C3")))
+    renderer = layout(ax)
+    pad = text_size(ax) * ax.figure.dpi / 72 * 0.15
+    rests = ax.transData.transform(np.column_stack([shifts, np.zeros_like(shifts)]))
+    radius = rest_ms / 2 * ax.figure.dpi / 72 + pad
+    boxes = [t.get_window_extent(renderer).padded(pad) for t in labels]
+
+    def free(box: Any) -> bool:
+        near = ((rests[:, 0] > box.x0 - radius) & (rests[:, 0] < box.x1 + radius)
+                & (rests[:, 1] > box.y0 - radius) & (rests[:, 1] < box.y1 + radius))
+        return not near.any() and not any(box.overlaps(b) for b in boxes)
+
+    for i, (c1, top) in enumerate(swings):
+        side = 1 if i % 2 == 0 else -1
+        slots = [(c, sd) for c in copies for sd in (side, -side)]
+        for copy, sd in slots:
+            text = ax.annotate(_c1_text(c1), (copy, sd * top), **_inline(ax, "C0"))
+            box = text.get_window_extent(renderer).padded(pad)
+            if free(box) or (copy, sd) == slots[-1]:
+                break
+            text.remove()
+        labels.append(text)
+        boxes.append(box)
+    return labels
 
 
 def plot_motion(motions: Motion | Sequence[Motion], t: npt.ArrayLike, axes: Any = None,
@@ -279,9 +359,9 @@ def plot_motion(motions: Motion | Sequence[Motion], t: npt.ArrayLike, axes: Any 
     axes[0].set_ylabel(r"$\theta$")
     axes[1].set_ylabel(r"$\theta'$")
     axes[1].set_xlabel("$t$")
-    axes[0].legend()
     for ax in axes:
         readable(ax)
+    place_legend(axes[0])
     return axes
 
 

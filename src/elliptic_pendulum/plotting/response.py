@@ -17,7 +17,7 @@ import numpy.typing as npt
 
 from ..driven.continuation import ResponseCurve
 from ..driven.resonance import backbone_frequency, duffing_backbone
-from ._base import new_axes, readable
+from ._base import new_axes, place_legend, readable
 
 __all__ = ["plot_backbone", "plot_response", "plot_sweep", "backbone_plot", "response_plot",
            "sweep_plot"]
@@ -97,7 +97,7 @@ def plot_backbone(omega0: float = 1.0, ax: Any = None, against: str = "amplitude
                     label=points_label)
         ax.set(xlim=(0, 180), ylim=(0, 1.05), xticks=range(0, 181, 30),
                xlabel="amplitude $A$ (degrees)", ylabel=r"$\omega / \omega_0$")
-        ax.legend(loc="lower left")
+        place_legend(ax, loc="lower left")
         return readable(ax)
     ax.plot(-np.cos(A), exact, color="C0", lw=2, label="swings")
     v = w0 * np.sqrt(2 * (1 + np.geomspace(1 + 1e-9, 4.0, 400)))
@@ -108,7 +108,7 @@ def plot_backbone(omega0: float = 1.0, ax: Any = None, against: str = "amplitude
     ax.axvline(1.0, color="0.6", ls=":", lw=1)
     ax.set(xlim=(-1, 4), ylim=(0, None), xlabel=r"energy $h = c_1/(2\omega_0^2)$",
            ylabel=r"$\omega / \omega_0$")
-    ax.legend(loc="upper left")
+    place_legend(ax, loc="upper left")
     return readable(ax)
 
 
@@ -215,7 +215,7 @@ def plot_response(curve: ResponseCurve, ax: Any = None, *, color: str = "C0",
            xlabel=r"forcing frequency $\Omega$",
            ylabel="amplitude $A$ (rad)")
     if legend is not None:
-        ax.legend(loc=legend)
+        place_legend(ax, loc=legend)
     return readable(ax)
 
 
@@ -268,7 +268,7 @@ def plot_sweep(curve: ResponseCurve, up: tuple[npt.ArrayLike, npt.ArrayLike],
     top = np.concatenate([np.ravel(up[1]), np.ravel(down[1])]).max()
     ax.set(xlim=(swept.min(), swept.max()), ylim=(0, 1.1 * top),
            xlabel=r"forcing frequency $\Omega$", ylabel="amplitude $A$ (rad)")
-    ax.legend(loc="lower right", markerscale=4)
+    place_legend(ax, loc="lower right", markerscale=4)
     return readable(ax)
 
 
