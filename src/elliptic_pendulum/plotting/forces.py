@@ -1,9 +1,11 @@
-r"""Figures of the chapter "rod or string?": the flight of the bob, the phase plane of a string.
+r"""Figures of the forces: the rod's tension, the string's slack and the bob's free flight.
 
-A string pendulum's bob on its circle, in free flight after the string goes slack, and on the
+The rod's tension along a swing and where the rod pushes, (4) (:func:`plot_tension`); a
+string pendulum's bob on its circle, in free flight after the string goes slack, and on the
 circle again after the jerk (:func:`plot_string_flight`); the phase plane shaded by what a
-string does (:func:`plot_string_phase_plane`). Like :mod:`elliptic_pendulum.plotting`, which
-re-exports them, every helper takes an optional ``ax``, returns it, and changes no rcParams.
+string does (:func:`plot_string_phase_plane`). Like every figure of
+:mod:`elliptic_pendulum.plotting`, which re-exports them, each takes an optional ``ax``,
+returns it, and changes no rcParams.
 """
 
 from __future__ import annotations

@@ -1,10 +1,10 @@
-r"""Figures of the elliptic functions, and the ones a teacher asks for beyond the note.
+r"""Figures of the elliptic functions and of Lemma 2's extensions.
 
-The functions of sections 3 and 5 (sn, cn, dn, E1, G, am) and three figures the note argues
-in words: the period ratio R(θ0) with its crossings and its logarithmic growth near the top
-(section 4), the rod's tension along a swing and where the rod pushes (4), and Lemma 2's
-extensions (20) and (21). Like :mod:`elliptic_pendulum.plotting`, which re-exports them,
-every helper takes an optional ``ax``, returns it, and changes no rcParams.
+The functions of sections 3 and 5 (sn, cn, dn with :func:`plot_jacobi`, E1 with
+:func:`plot_integral`, its inverse G with :func:`plot_inverse`, am with
+:func:`plot_amplitude`), and Lemma 2's extensions (20) and (21) (:func:`plot_extension`).
+Like every figure of :mod:`elliptic_pendulum.plotting`, which re-exports them, each takes an
+optional ``ax``, returns it, and changes no rcParams.
 """
 
 from __future__ import annotations

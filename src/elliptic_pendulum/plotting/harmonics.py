@@ -1,10 +1,10 @@
-r"""Figures of the chapters beyond the note, first of all the period in depth.
+r"""Figures of the period: its ratio to the small-angle period, its approximations, its harmonics.
 
-The errors of the laboratory's approximations of R(θ0) and the harmonics of a swing. The
-figures of the other chapters beyond the note are in :mod:`elliptic_pendulum.plotting`
-(rod or string) and :mod:`elliptic_pendulum.plotting` (toward nonlinear
-resonance). Like :mod:`elliptic_pendulum.plotting`, which re-exports them, every helper takes
-an optional ``ax`` (or ``axes``), returns it, and changes no rcParams.
+The period ratio R(θ0) with its crossings and its logarithmic growth near the top (section
+4, :func:`plot_period_ratio`), the errors of the laboratory's approximations of R
+(:func:`plot_approximation_error`) and the harmonics of a swing (:func:`plot_harmonics`).
+Like every figure of :mod:`elliptic_pendulum.plotting`, which re-exports them, each takes an
+optional ``ax`` (or ``axes``), returns it, and changes no rcParams.
 """
 
 from __future__ import annotations
