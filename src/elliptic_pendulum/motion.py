@@ -255,28 +255,28 @@ def solve(theta0: ArrayLike, dtheta0: ArrayLike = 0.0, omega0: ArrayLike = 1.0) 
         For NaN, infinities, omega0 <= 0, shapes that do not broadcast, or an
         energy beyond the range of doubles (naming the parameter). For a push
         too small for omega0 (naming dtheta0 and omega0): w = dtheta0 / (2 omega0)
-        is what the motion carries, and |dtheta0 / (2 omega0)| must be 0 or at
+        is what the motion carries, and ``abs(dtheta0 / (2 omega0))`` must be 0 or at
         least 2**-1022 (below, w would underflow or lose its digits). For a push
         so small, this close to the top, that the complementary modulus falls
         below 1e-300 (naming dtheta0): K = log(4/kc), hence the period, would
         lose its digits; use dtheta0 = 0 (balanced at the top) or
-        |dtheta0| >= 2e-300 omega0. For theta0 = +-5e-324 at rest (naming theta0):
+        ``abs(dtheta0) >= 2e-300 omega0``. For theta0 = +-5e-324 at rest (naming theta0):
         the modulus sin(theta0 / 2) rounds to 0 while the state swings.
 
     Notes
     -----
     The regime and the modulus come from k^2 = s^2 + w^2 and
-    kc^2 = 1 - k^2 = (c - |w|)(c + |w|), with s, c = sin, cos of half of theta0
+    kc^2 = 1 - k^2 = (c - abs(w)) (c + abs(w)), with s, c = sin, cos of half of theta0
     reduced by 2 pi m and w = dtheta0 / (2 omega0), formed from the exact doubles
-    in double-double arithmetic, where c - |w| is known to an absolute error of
+    in double-double arithmetic, where c - abs(w) is known to an absolute error of
     about 3e-32. Off the separatrix that is far below a double's rounding. Near
-    it kc^2 has the relative error cond = 3e-32 / |c - |w||, the complementary
+    it kc^2 has the relative error cond = 3e-32 / abs(c - abs(w)), the complementary
     modulus half of it and the period less than cond, and the phase drifts by up
     to about cond per quarter period: after N quarter periods theta may be off by
     2 k cond (N + 3) beyond its few ulp, theta' by 2 omega0 k times that. Within
     about 3e-32 of the separatrix (cond >= 1) the regime itself (II, III or IV)
     is not determined by the arithmetic. The exact separatrix (theta0 = 2 pi m
-    with |dtheta0| = 2 omega0, or at rest at the top) is exact.
+    with abs(dtheta0) = 2 omega0, or at rest at the top) is exact.
 
     Examples
     --------
