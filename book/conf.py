@@ -65,11 +65,12 @@ math_eqref_format = "({number})"
 
 # --- Links into the reference site, offline (book/_ext/offline.py) ---------------------
 # {py:func}`ep.solve <elliptic_pendulum.motion.solve>` links to the API entry of the docs
-# build, read from its objects.inv on disk, relative to this build. The docs build defaults
-# to docs/_build/html (`make book` runs `make docs` first); the tests build it elsewhere and
-# say where with ELLIPTIC_PENDULUM_DOCS_HTML.
-reference_site = os.environ.get("ELLIPTIC_PENDULUM_DOCS_HTML") or str(
-    _HERE.parent / "docs" / "_build" / "html")
+# build, read from its objects.inv on disk, relative to this build. The docs are built into
+# the book's own output folder, <outdir>/reference (`make book` and the tests do), so the
+# book and its reference are one folder that can be copied or served as it is. A relative
+# path is taken from the output folder; ELLIPTIC_PENDULUM_DOCS_HTML may name another build
+# (the PDF's single-page builds, `make pdf`).
+reference_site = os.environ.get("ELLIPTIC_PENDULUM_DOCS_HTML") or "reference"
 intersphinx_mapping: dict[str, tuple[str, str]] = {}
 
 # --- Copy buttons -----------------------------------------------------------------------

@@ -17,7 +17,7 @@ from pathlib import Path
 import pytest
 
 from tests.book.test_notebooks import SYNTHETIC
-from tests.conftest import BOOK, Build, sphinx_build
+from tests.conftest import BOOK, Build
 from tools.classroom import export as ex
 from tools.classroom.labels import scan
 
@@ -60,16 +60,6 @@ def test_hide_solutions_builds_and_drops_gated_solutions(tmp_path: Path) -> None
     # The student build holds only the student edition.
     assert (tmp_path / "student" / "classroom" / "student" / "02-alpha.ipynb").exists()
     assert not (tmp_path / "student" / "classroom" / "instructor").exists()
-
-
-@pytest.fixture(scope="session")
-def student_book(tmp_path_factory: pytest.TempPathFactory, docs_build: Build) -> Build:
-    cache = tmp_path_factory.getbasetemp() / "jupyter-cache"  # shared with test_pdf
-    return sphinx_build(
-        BOOK, tmp_path_factory.mktemp("student") / "html",
-        "-D", "hide_solutions=1", "-D", f"nb_execution_cache_path={cache}",
-        env={"ELLIPTIC_PENDULUM_DOCS_HTML": str(docs_build.outdir)},
-    )
 
 
 @pytest.mark.slow
