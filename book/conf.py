@@ -88,8 +88,13 @@ html_theme = "sphinx_book_theme"
 html_title = "The simple pendulum and elliptic functions"
 # MathJax is served from the build too (book/_ext/offline.py adds its files).
 html_static_path = ["_static"]
+templates_path = ["_templates"]
 html_theme_options = {
     "show_toc_level": 2,
+    # The theme's footer, and which edition this is (_templates/edition.html): the
+    # instructor site holds the solutions and is for the teacher only.
+    "footer_content_items": ["author.html", "copyright.html", "edition.html",
+                             "last-updated.html", "extra-footer.html"],
     # No launch buttons, repository buttons or analytics: each would link to or load from
     # the network, and the book must work offline.
     "use_download_button": True,

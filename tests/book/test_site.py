@@ -18,10 +18,16 @@ another temporary folder, as a reader gets it from a web server or a zip, and ch
 
 The pages, links and anchors checked per site go to the terminal summary ("site check").
 
+The student site holds no solution in any file: the text of each solution, taken from the
+book's sources (every ``{solution-start}`` .. ``{solution-end}`` block), is searched for in
+every file of the student build (pages, ``_sources``, the search index, notebooks, the zips
+opened) and must not be there; the same search finds it in the instructor build.
 """
 
 from __future__ import annotations
 
+import html
+import json
 import os
 import re
 import shutil
@@ -32,13 +38,16 @@ import time
 import urllib.error
 import urllib.parse
 import urllib.request
+import zipfile
+from collections.abc import Iterator
 from html.parser import HTMLParser
 from pathlib import Path
 
 import pytest
 
 from tests.book.test_browser import Browser
-from tests.conftest import BOOK, ROOT, SUMMARY, Build
+from tests.conftest import BOOK, DOCS, ROOT, SUMMARY, Build
+from tools.classroom.markdown import DIRECTIVE_OPEN, strip_solutions
 
 # Plain <a href> links out of the site (never a src, a <link> or a <script>): where a reader
 # goes to read more, nothing that a page needs in order to work. Only these are allowed:
@@ -323,3 +332,168 @@ def test_search_finds_a_word_with_snippets_over_http(
     finally:
         browser.close()
         served.close()
+
+
+# --- No solution in the student site ---------------------------------------------------
+
+# Markup that the HTML, the notebooks and the search index render differently from the
+# source: math, roles, inline code, emphasis, list and table marks. The plain text between
+# them is what a reader sees, and what the search looks for.
+MARKUP = re.compile(r"\$\$?[^$]*\$\$?|\{[\w:+-]+\}`[^`]*`|`[^`]*`|[*_|\\]{1,2}|^\s*(\d+\.|[-+])\s")
+MIN_LENGTH = 24
+
+
+def solutions(text: str) -> list[list[str]]:
+    """The source lines of each solution of a page: ``{solution-start}`` .. ``{solution-end}``
+    blocks (as tools/classroom/markdown.strip_solutions finds them) and ``{solution}``
+    directives, their directive lines and options left out."""
+    found: list[list[str]] = []
+    lines = text.splitlines()
+    i, current = 0, None
+    while i < len(lines):
+        opened = DIRECTIVE_OPEN.match(lines[i].strip())
+        name = opened["name"].strip() if opened else ""
+        if opened and name in {"solution", "solution-start", "solution-end"}:
+            closing = re.compile(r"^\s*" + re.escape(opened["fence"][0]) + "{3,}\\s*$")
+            body = []
+            i += 1
+            while i < len(lines) and not closing.match(lines[i]):
+                body.append(lines[i])
+                i += 1
+            i += 1
+            if name == "solution":
+                found.append(body)
+            elif name == "solution-start":
+                current = []
+                found.append(current)
+            else:
+                current = None
+            continue
+        if current is not None:
+            current.append(lines[i])
+        i += 1
+    return found
+
+
+def _squash(text: str) -> str:
+    return re.sub(r"\s+", " ", text).strip()
+
+
+def snippets(lines: list[str]) -> set[str]:
+    """Distinctive pieces of a solution: its code lines, and the plain text of its prose
+    between the markup, each at least MIN_LENGTH characters long."""
+    found = set()
+    in_code = False
+    for line in lines:
+        stripped = line.strip()
+        if re.match(r"^(`{3,}|~{3,})", stripped):
+            in_code = not in_code
+            continue
+        if not stripped or re.match(r"^(:[\w-]+:|---$|tags:|mystnb:)", stripped):
+            continue
+        pieces = [stripped] if in_code else MARKUP.split(stripped)
+        for piece in pieces:
+            piece = _squash(piece or "").strip(" ,.;:()")
+            if len(piece) >= MIN_LENGTH and len(piece.split()) >= 3:
+                found.add(piece)
+    return found
+
+
+def solution_snippets() -> dict[str, set[str]]:
+    """``page:n`` -> the snippets of the n-th solution of the page, less those that the
+    published text holds anyway (the book without solutions, the reference's sources and
+    the package's docstrings), which would prove nothing."""
+    public = [strip_solutions(p.read_text(encoding="utf-8")) for p in sorted(BOOK.glob("*.md"))]
+    public += [p.read_text(encoding="utf-8") for p in sorted(DOCS.glob("*.md"))]
+    public += [p.read_text(encoding="utf-8") for p in sorted((ROOT / "src").rglob("*.py"))]
+    public_text = _squash("\n".join(public))
+    found = {}
+    for page in sorted(BOOK.glob("*.md")):
+        for n, lines in enumerate(solutions(page.read_text(encoding="utf-8")), 1):
+            found[f"{page.stem}:{n}"] = {s for s in snippets(lines) if s not in public_text}
+    return found
+
+
+def _texts(path: Path, name: str, data: bytes) -> Iterator[tuple[str, str]]:
+    """The readable text of one file (a zip's members one by one), as a reader or a search
+    engine sees it: HTML without tags and entities, notebooks and JSON as their strings."""
+    if name.endswith(".zip"):
+        import io
+
+        with zipfile.ZipFile(io.BytesIO(data)) as z:
+            for member in z.namelist():
+                yield from _texts(path, f"{name}!{member}", z.read(member))
+        return
+    text = data.decode("utf-8", errors="replace")
+    if name.endswith((".html", ".htm")):
+        yield name, html.unescape(re.sub(r"<[^>]+>", "", text))
+    elif name.endswith((".ipynb", ".json")):
+        try:
+            yield name, "\n".join(_strings(json.loads(text)))
+        except ValueError:
+            yield name, text
+    else:
+        yield name, text
+    yield name + " (raw)", text
+
+
+def _strings(value) -> Iterator[str]:
+    if isinstance(value, str):
+        yield value
+    elif isinstance(value, list):
+        if all(isinstance(v, str) for v in value):  # a notebook cell's source lines
+            yield "".join(value)
+        else:
+            for v in value:
+                yield from _strings(v)
+    elif isinstance(value, dict):
+        for v in value.values():
+            yield from _strings(v)
+
+
+def scan_site(site: Path, wanted: dict[str, set[str]]) -> tuple[dict[str, list[str]], int]:
+    """(solution -> the files in which one of its snippets appears, files scanned)."""
+    hits: dict[str, list[str]] = {}
+    files = 0
+    for path in sorted(site.rglob("*")):
+        if not path.is_file():
+            continue
+        files += 1
+        name = path.relative_to(site).as_posix()
+        for where, text in _texts(path, name, path.read_bytes()):
+            text = _squash(text)
+            for solution, pieces in wanted.items():
+                if any(piece in text for piece in pieces):
+                    hits.setdefault(solution, []).append(where)
+    return hits, files
+
+
+def test_the_student_site_holds_no_solution_in_any_file(copies: dict) -> None:
+    wanted = solution_snippets()
+    assert len(wanted) == 32, sorted(wanted)  # every solution of the book
+    empty = [s for s, pieces in wanted.items() if not pieces]
+    assert empty == [], "solutions without a distinctive snippet"
+    student, instructor = copies["student"][0], copies["book"][0]
+    leaks, scanned = scan_site(student, wanted)
+    found, scanned_instructor = scan_site(instructor, wanted)
+    count = sum(len(p) for p in wanted.values())
+    SUMMARY["solution search"] = [
+        f"{count} snippets of {len(wanted)} solutions; student site: {scanned} files scanned "
+        f"(zips opened), {len(leaks)} solutions found; instructor site: {scanned_instructor} "
+        f"files scanned, {len(found)} solutions found"
+    ]
+    assert leaks == {}
+    # The same search finds every solution in the instructor site: the check can fail.
+    assert sorted(found) == sorted(wanted)
+    pages = {s for s, where in found.items() if any(w.endswith(".html") for w in where)}
+    assert pages == set(wanted), "solutions not found in the instructor site's pages"
+
+
+def test_the_student_site_offers_only_the_student_bundle(copies: dict) -> None:
+    student, instructor = copies["student"][0], copies["book"][0]
+    assert sorted(p.name for p in (student / "classroom").glob("*.zip")) == [
+        "elliptic-pendulum-notebooks-student.zip"]
+    for page in _pages(student):
+        assert "instructor" not in " ".join(u for _, _, u in _parse(page).urls), page
+    index = (instructor / "energy.html").read_text(encoding="utf-8")
+    assert 'href="classroom/elliptic-pendulum-notebooks-instructor.zip"' in index

@@ -75,6 +75,8 @@ def test_student_book_has_exercises_and_no_solutions(student_book: Build) -> Non
     # Every exercise is there, numbered as the notebooks number it.
     assert seen == index.exercise_numbers
     assert not (student_book.outdir / "classroom" / "instructor").exists()
+    assert not list((student_book.outdir / "classroom").glob("*instructor*"))
+    assert "A teacher keeps it private" not in html  # the footer of the instructor site
 
 
 @pytest.mark.slow
@@ -82,9 +84,14 @@ def test_book_offers_each_chapter_notebook(built_book: Path) -> None:
     index = scan(BOOK)
     for page in index.exported:
         html = (built_book / f"{page}.html").read_text(encoding="utf-8")
-        link = f"classroom/student/{index.files[page]}"
-        assert f'href="{link}"' in html, page
-        assert (built_book / link).is_file()
+        # The instructor site (the default build) offers both editions, and says it is
+        # the teacher's (book/_templates/edition.html).
+        for edition in ("student", "instructor"):
+            link = f"classroom/{edition}/{index.files[page]}"
+            assert f'href="{link}"' in html, (page, edition)
+            assert (built_book / link).is_file()
+            assert f'href="classroom/elliptic-pendulum-notebooks-{edition}.zip"' in html, page
+        assert "A teacher keeps it private" in html, page
     for edition in ("student", "instructor"):
         archive = built_book / "classroom" / f"elliptic-pendulum-notebooks-{edition}.zip"
         with zipfile.ZipFile(archive) as z:
