@@ -8,7 +8,9 @@ from pathlib import Path
 
 project = "The simple pendulum and elliptic functions"
 author = "elliptic-pendulum contributors, after S. Takeno (2024)"
-copyright = "2024-2026, elliptic-pendulum contributors"
+# The footer (_templates/licence.html) adds the licences: text and figures CC BY 4.0
+# (book/LICENSE), code MIT (LICENSE); about.md says so in full.
+copyright = "2024-2026 elliptic-pendulum contributors"
 
 # Local extensions (book/_ext: the classroom editions, the kernels' profile, the offline
 # assets, shared with docs/conf.py) and the repository's tools (tools.classroom), found the
@@ -91,9 +93,10 @@ html_static_path = ["_static"]
 templates_path = ["_templates"]
 html_theme_options = {
     "show_toc_level": 2,
-    # The theme's footer, and which edition this is (_templates/edition.html): the
+    # The theme's footer with the licences (_templates/licence.html, in place of the
+    # theme's copyright.html), and which edition this is (_templates/edition.html): the
     # instructor site holds the solutions and is for the teacher only.
-    "footer_content_items": ["author.html", "copyright.html", "edition.html",
+    "footer_content_items": ["author.html", "licence.html", "edition.html",
                              "last-updated.html", "extra-footer.html"],
     # No launch buttons, repository buttons or analytics: each would link to or load from
     # the network, and the book must work offline.
