@@ -11,7 +11,7 @@ another temporary folder, as a reader gets it from a web server or a zip, and ch
 * nothing refers to a local path: no ``file:`` URL, no absolute path, neither the build
   folder nor the repository's path in any text file;
 * nothing is loaded from the network: an http(s) URL may only be the ``href`` of a plain
-  ``<a>`` link to a host of ``OUTWARD`` (the reader follows it or not);
+  ``<a>`` link to a work the book cites or a licence (``outward_urls``);
 * in Chromium, over http, the search pages of the book and of its reference find a word and
   show snippets of the pages (Sphinx's search reads ``searchindex.js`` and fetches the pages
   for the snippets, which works over http, not from file://).
