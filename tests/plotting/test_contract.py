@@ -306,3 +306,15 @@ def test_the_animation_reads_on_a_phone_and_its_pendulums_fill_their_panel():
     finally:
         anim._draw_was_started = True
         plt.close(anim._fig)
+
+
+@pytest.mark.parametrize("name", [n for n in epp.FIGURES if n not in ("plot_motion",
+                                                                     "plot_harmonics")])
+def test_draws_on_a_figure_made_without_pyplot(name):
+    # A matplotlib.figure.Figure() has a bare FigureCanvasBase, with no renderer of its own:
+    # the legend and label placement must still measure its text (the book makes one so).
+    from matplotlib.figure import Figure
+
+    call, _ = EXAMPLES[name]
+    ax = Figure(figsize=(8, 4.4)).subplots()
+    assert call(ax) is ax

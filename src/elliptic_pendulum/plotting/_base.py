@@ -158,7 +158,14 @@ def layout(ax: Any) -> Any:
     engine = fig.get_layout_engine()
     if engine is not None:
         engine.execute(fig)
-    return fig.canvas.get_renderer()
+    canvas = fig.canvas
+    if hasattr(canvas, "get_renderer"):  # Agg and the backends built on it (inline, SVG)
+        return canvas.get_renderer()
+    # A Figure made without pyplot has a bare FigureCanvasBase: measure with Agg, which
+    # matplotlib's own tight layout does the same way, and leave the figure's canvas alone.
+    from matplotlib.backends.backend_agg import RendererAgg
+
+    return RendererAgg(fig.bbox.width, fig.bbox.height, fig.dpi)
 
 
 def legend_below(ax: Any, *args: Any, gap: float = 4.0, **kwargs: Any) -> Any:
