@@ -1,11 +1,12 @@
 # Entry points of elliptic-pendulum. Every target creates the virtual environment first,
 # so on a fresh machine `make book` and `make test` are the only set-up commands.
 #
-#   make book         HTML book in book/_build/html (myst-nb cache: unchanged cells are not re-run)
+#   make book         the site in book/_build/html: the book and its reference in reference/,
+#                     one self-contained folder (myst-nb cache: unchanged cells are not re-run)
 #   make book-strict  the same from clean, every notebook re-executed (what CI checks)
 #   make docs         API/reference site in docs/_build/html
 #   make notebooks    classroom notebooks, notebooks/student and notebooks/instructor
-#   make book-student the book without solutions in book/_build/student/html
+#   make book-student the student site (no solutions) in book/_build/student/html, likewise
 #   make pdf          book/_build/pdf/book.pdf (solutions open) and book-student.pdf
 #   make bench        speed and accuracy tables
 #   make test         everything: unit, property and doctests, book and docs builds,
@@ -37,14 +38,21 @@ $(STAMP): pyproject.toml
 	$(PY) -m pip install --quiet -e ".[test,book,dev]"
 	touch $@
 
-# The book links the library's names to the reference site, reading its objects.inv from
-# docs/_build/html (book/conf.py): the docs are built first.
-book: docs
-	$(SPHINX) -b html book book/_build/html
+# A site is one folder: the book, and the reference site built into its reference/ folder
+# first (the book links the library's names there, reading reference/objects.inv:
+# book/conf.py). Every link is relative and stays inside the folder, so it can be copied to
+# a web server or zipped as it is. The doctrees are kept out of it, in book/_build/doctrees.
+DOCTREES := book/_build/doctrees
 
-book-strict: docs
-	$(SPHINX) -E -D nb_execution_mode=force -b html book book/_build/html
+book: $(STAMP)
+	$(SPHINX) -d $(DOCTREES)/reference -b html docs book/_build/html/reference
+	$(SPHINX) -d $(DOCTREES)/book -b html book book/_build/html
 
+book-strict: $(STAMP)
+	$(SPHINX) -E -d $(DOCTREES)/reference -b html docs book/_build/html/reference
+	$(SPHINX) -E -d $(DOCTREES)/book -D nb_execution_mode=force -b html book book/_build/html
+
+# The reference site alone.
 docs: $(STAMP)
 	$(SPHINX) -b html docs docs/_build/html
 
@@ -54,14 +62,17 @@ notebooks: $(STAMP)
 	rm -rf notebooks/student notebooks/instructor
 	$(PY) -m tools.classroom book notebooks --execute
 
-# The book without solutions (book/_ext/classroom.py removes them from the page sources).
-book-student: docs
-	$(SPHINX) -D hide_solutions=1 -b html book book/_build/student/html
+# The student site: the book without solutions (book/_ext/classroom.py removes them from
+# the pages, their sources and the notebooks) and its own copy of the reference.
+book-student: $(STAMP)
+	$(SPHINX) -d $(DOCTREES)/student-reference -b html docs book/_build/student/html/reference
+	$(SPHINX) -d $(DOCTREES)/student -D hide_solutions=1 -b html book book/_build/student/html
 
 # The whole book as one PDF each for instructors (solutions open) and students (none):
 # a single-page build of each, printed by headless Chromium once MathJax is done.
+# Its links to the reference go to docs/_build/html.
 pdf: docs
-	$(PY) -m tools.pdf book book/_build
+	ELLIPTIC_PENDULUM_DOCS_HTML=$(CURDIR)/docs/_build/html $(PY) -m tools.pdf book book/_build
 
 bench: $(STAMP)
 	$(PY) benchmarks/bench_theta.py

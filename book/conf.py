@@ -8,7 +8,9 @@ from pathlib import Path
 
 project = "The simple pendulum and elliptic functions"
 author = "elliptic-pendulum contributors, after S. Takeno (2024)"
-copyright = "2024-2026, elliptic-pendulum contributors"
+# The footer (_templates/licence.html) adds the licences: text and figures CC BY 4.0
+# (book/LICENSE), code MIT (LICENSE); about.md says so in full.
+copyright = "2024-2026 elliptic-pendulum contributors"
 
 # Local extensions (book/_ext: the classroom editions, the kernels' profile, the offline
 # assets, shared with docs/conf.py) and the repository's tools (tools.classroom), found the
@@ -65,11 +67,12 @@ math_eqref_format = "({number})"
 
 # --- Links into the reference site, offline (book/_ext/offline.py) ---------------------
 # {py:func}`ep.solve <elliptic_pendulum.motion.solve>` links to the API entry of the docs
-# build, read from its objects.inv on disk, relative to this build. The docs build defaults
-# to docs/_build/html (`make book` runs `make docs` first); the tests build it elsewhere and
-# say where with ELLIPTIC_PENDULUM_DOCS_HTML.
-reference_site = os.environ.get("ELLIPTIC_PENDULUM_DOCS_HTML") or str(
-    _HERE.parent / "docs" / "_build" / "html")
+# build, read from its objects.inv on disk, relative to this build. The docs are built into
+# the book's own output folder, <outdir>/reference (`make book` and the tests do), so the
+# book and its reference are one folder that can be copied or served as it is. A relative
+# path is taken from the output folder; ELLIPTIC_PENDULUM_DOCS_HTML may name another build
+# (the PDF's single-page builds, `make pdf`).
+reference_site = os.environ.get("ELLIPTIC_PENDULUM_DOCS_HTML") or "reference"
 intersphinx_mapping: dict[str, tuple[str, str]] = {}
 
 # --- Copy buttons -----------------------------------------------------------------------
@@ -87,8 +90,14 @@ html_theme = "sphinx_book_theme"
 html_title = "The simple pendulum and elliptic functions"
 # MathJax is served from the build too (book/_ext/offline.py adds its files).
 html_static_path = ["_static"]
+templates_path = ["_templates"]
 html_theme_options = {
     "show_toc_level": 2,
+    # The theme's footer with the licences (_templates/licence.html, in place of the
+    # theme's copyright.html), and which edition this is (_templates/edition.html): the
+    # instructor site holds the solutions and is for the teacher only.
+    "footer_content_items": ["author.html", "licence.html", "edition.html",
+                             "last-updated.html", "extra-footer.html"],
     # No launch buttons, repository buttons or analytics: each would link to or load from
     # the network, and the book must work offline.
     "use_download_button": True,

@@ -1,5 +1,9 @@
 """Shared fixtures. The book and the docs are built once per session, from clean and with
 every notebook re-executed, and the builds are reused by the build, browser and other tests.
+
+They are built as `make book` builds them: one site folder, ``<tmp>/book<N>/html``, with the
+reference site in its ``reference/`` folder (built first: the book reads its objects.inv
+there, book/conf.py) and the doctrees beside it, not in it.
 """
 
 from __future__ import annotations
@@ -62,41 +66,76 @@ def sphinx_build(
     start = time.perf_counter()
     proc = subprocess.run(cmd, cwd=ROOT, env=env, capture_output=True, text=True, timeout=1800)
     seconds = time.perf_counter() - start
-    _TIMINGS.append(f"sphinx-build {source.name}: {seconds:.1f} s (exit {proc.returncode})")
+    _TIMINGS.append(
+        f"sphinx-build {source.name} -> {outdir.parent.name}/{outdir.name}: "
+        f"{seconds:.1f} s (exit {proc.returncode})"
+    )
     return Build(source, outdir, proc.returncode, proc.stdout + proc.stderr, seconds)
 
 
-_TIMINGS: list[str] = []
-
-
-def pytest_terminal_summary(terminalreporter: pytest.TerminalReporter) -> None:
-    """Report how long the builds took, so slow chapters are noticed."""
-    if _TIMINGS:
-        terminalreporter.write_sep("-", "build times")
-        for line in _TIMINGS:
-            terminalreporter.write_line(line)
-
-
-@pytest.fixture(scope="session")
-def book_build(tmp_path_factory: pytest.TempPathFactory, docs_build: Build) -> Build:
-    """The book built from clean with forced execution (what CI checks).
-
-    It links to the API entries of this session's docs build (book/conf.py reads its
-    objects.inv from ELLIPTIC_PENDULUM_DOCS_HTML), so the docs are built once, first.
-    """
+def reference_build(site: Path) -> Build:
+    """The reference site built from clean into ``<site>/html/reference``, as `make book`
+    and `make book-student` build it into theirs (doctrees in ``<site>/doctrees``)."""
     return sphinx_build(
-        BOOK,
-        tmp_path_factory.mktemp("book") / "html",
-        "-D",
-        "nb_execution_mode=force",
-        env={"ELLIPTIC_PENDULUM_DOCS_HTML": str(docs_build.outdir)},
+        DOCS, site / "html" / "reference", "-d", str(site / "doctrees" / "reference")
     )
 
 
+def book_site_build(site: Path, *extra: str) -> Build:
+    """The book built from clean into ``<site>/html``, around its reference (built first)."""
+    return sphinx_build(BOOK, site / "html", "-d", str(site / "doctrees" / "book"), *extra)
+
+
+_TIMINGS: list[str] = []
+# Lines for the terminal summary from other tests (the site check's counts), by section.
+SUMMARY: dict[str, list[str]] = {}
+
+
+def pytest_terminal_summary(terminalreporter: pytest.TerminalReporter) -> None:
+    """Report how long the builds took, so slow chapters are noticed, and what else the
+    tests counted (the pages, links and anchors of each site)."""
+    sections = {"build times": _TIMINGS, **SUMMARY}
+    for title, lines in sections.items():
+        if lines:
+            terminalreporter.write_sep("-", title)
+            for line in lines:
+                terminalreporter.write_line(line)
+
+
 @pytest.fixture(scope="session")
-def docs_build(tmp_path_factory: pytest.TempPathFactory) -> Build:
-    """The reference site built from clean."""
-    return sphinx_build(DOCS, tmp_path_factory.mktemp("docs") / "html")
+def site_folder(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """The folder of this session's book site: ``html`` (the site) and ``doctrees``."""
+    return tmp_path_factory.mktemp("book")
+
+
+@pytest.fixture(scope="session")
+def book_build(site_folder: Path, docs_build: Build) -> Build:
+    """The book built from clean with forced execution (what CI checks).
+
+    It links to the API entries of this session's docs build, in its own ``reference/``
+    folder (book/conf.py reads the objects.inv there), so the docs are built once, first.
+    """
+    return book_site_build(site_folder, "-D", "nb_execution_mode=force")
+
+
+@pytest.fixture(scope="session")
+def docs_build(site_folder: Path) -> Build:
+    """The reference site built from clean, into the book site's ``reference/`` folder."""
+    return reference_build(site_folder)
+
+
+@pytest.fixture(scope="session")
+def student_book(tmp_path_factory: pytest.TempPathFactory) -> Build:
+    """The student site as `make book-student` builds it: its own reference first, in
+    ``html/reference``, then the book without solutions around it."""
+    cache = tmp_path_factory.getbasetemp() / "jupyter-cache"  # shared with test_pdf
+    site = tmp_path_factory.mktemp("student")
+    reference = reference_build(site)
+    if reference.returncode != 0:
+        pytest.fail("the student site's reference did not build:\n" + reference.output[-3000:])
+    return book_site_build(
+        site, "-D", "hide_solutions=1", "-D", f"nb_execution_cache_path={cache}"
+    )
 
 
 @pytest.fixture(scope="session")

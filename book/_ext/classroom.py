@@ -5,12 +5,17 @@
   (myst-nb's ``jupyter_execute/<page>.glue.json``, so the notebook's text quotes exactly what
   the HTML page shows), and zips each edition as ``classroom/<name>-<edition>.zip``.
 - ``html-page-context``: each chapter page's download menu (sphinx-book-theme) offers the
-  page's student notebook and the zip, as relative links into the build: they work offline.
+  page's student notebook and the student zip, and in the instructor site (the default
+  build) the instructor notebook and zip too, as relative links into the build: they work
+  offline. Every page knows its edition (``classroom_edition``: the footer says that the
+  instructor site, which holds the solutions, is for the teacher to keep private).
 - ``-D hide_solutions=1`` (the student book, ``make book-student``): sphinx-exercise's own
   option crashes the HTML writer (``departing unknown node type: solution_end_node``) and
   would leave a gated solution's text and cells in the page. The solutions are removed from
-  the page source at ``source-read`` instead (before myst-nb parses and executes it), and
-  only the student edition is exported.
+  the page source at ``source-read`` instead (before myst-nb parses and executes it), the
+  page sources that Sphinx copies to ``_sources/`` (the download menu's ``.md``) are the
+  same stripped text, and only the student edition is exported: no file of the student
+  site holds a solution (tests/book/test_site.py searches them all).
 """
 
 from __future__ import annotations
@@ -59,6 +64,18 @@ def _download_buttons(
          "tooltip": "Download every chapter's student notebook (zip)",
          "label": "download-student-zip-button"},
     ]
+    if "instructor" in _editions(app):
+        buttons += [
+            {"type": "link", "url": f"{up}{FOLDER}/instructor/{files[pagename]}",
+             "text": "notebook (instructor)", "icon": "fas fa-book",
+             "tooltip": "Download this chapter's notebook with its solutions (instructor "
+                        "edition)",
+             "label": "download-instructor-notebook-button"},
+            {"type": "link", "url": f"{up}{FOLDER}/{ZIP_NAME}-instructor.zip",
+             "text": "all notebooks (instructor)", "icon": "fas fa-file-archive",
+             "tooltip": "Download every chapter's notebook with its solutions (zip)",
+             "label": "download-instructor-zip-button"},
+        ]
     for group in context.get("header_buttons", []):
         if group.get("label") == "download-buttons":
             group["buttons"][:0] = buttons
@@ -70,6 +87,24 @@ def _download_buttons(
         )
 
 
+def _edition(
+    app: Sphinx, pagename: str, templatename: str, context: dict[str, Any], doctree: Any
+) -> None:
+    context["classroom_edition"] = "student" if app.config.hide_solutions else "instructor"
+
+
+def _stripped_sources(app: Sphinx) -> None:
+    # Sphinx copies each page's source file as it is to _sources/ (the download menu's .md):
+    # in the student site, that copy is the stripped text the page was built from.
+    sources = Path(app.outdir) / "_sources"
+    for docname in sorted(app.env.found_docs):
+        source = Path(app.env.doc2path(docname))
+        for copy in sources.glob(f"{docname}.*"):
+            if copy.name.startswith(source.name):
+                text = strip_solutions(source.read_text(encoding="utf-8"))
+                copy.write_text(text, encoding="utf-8")
+
+
 def _scan(app: Sphinx, env: Any, docnames: list[str]) -> None:
     # The notebook names in reading order, known before any page is written.
     env.classroom_files = scan(Path(app.srcdir)).files
@@ -78,6 +113,8 @@ def _scan(app: Sphinx, env: Any, docnames: list[str]) -> None:
 def _export(app: Sphinx, exception: BaseException | None) -> None:
     if exception is not None or app.builder.name != "html":
         return
+    if app.config.hide_solutions:
+        _stripped_sources(app)
     out = Path(app.outdir) / FOLDER
     editions = _editions(app)
     try:
@@ -122,5 +159,6 @@ def setup(app: Sphinx) -> dict[str, Any]:
     app.connect("env-before-read-docs", _scan)
     # After sphinx-book-theme builds its header buttons (priority 501).
     app.connect("html-page-context", _download_buttons, priority=510)
+    app.connect("html-page-context", _edition)
     app.connect("build-finished", _export)
     return {"version": "1.0", "parallel_read_safe": True, "parallel_write_safe": True}

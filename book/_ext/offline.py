@@ -10,10 +10,15 @@ Shared by the book and the reference site (``book/conf.py`` and ``docs/conf.py``
   at that copy. tests/book/test_book_build.py checks that no script or stylesheet comes from
   http(s); tests/book/test_browser.py that the math is typeset offline.
 * The reference site. With ``reference_site`` set to a built reference (a folder holding
-  ``objects.inv``), ``{py:func}`` roles link to its API entries through intersphinx, reading
-  the inventory from disk, never from the network, with links relative to this build's
-  output folder, so that they work from file:// and need no server. Only Python objects
-  resolve implicitly: a ``{ref}`` or ``{doc}`` never lands in the reference by accident.
+  ``objects.inv``; a relative path is taken from this build's output folder, so the book's
+  default ``"reference"`` is ``<outdir>/reference``, where ``make book`` builds the docs),
+  ``{py:func}`` roles link to its API entries through intersphinx, reading the inventory
+  from disk, never from the network, with links relative to this build's output folder, so
+  that they work from file:// and need no server. A reference inside the output folder
+  makes one self-contained site that can be copied, zipped or served as it is; one outside
+  it (the PDF's single-page builds) gives links that leave the folder.
+  Only Python objects resolve implicitly: a ``{ref}`` or ``{doc}`` never lands in the
+  reference by accident.
 """
 
 from __future__ import annotations
@@ -41,12 +46,13 @@ def _configure(app: Sphinx, config: Config) -> None:
     config.html_static_path = [*config.html_static_path, _mathjax_files()]
     config.mathjax_path = "mathjax/tex-chtml.js"
     if config.reference_site:
-        site = Path(config.reference_site).resolve()
+        site = (Path(app.outdir) / config.reference_site).resolve()
         if not (site / "objects.inv").is_file():
             raise RuntimeError(
                 f"The reference site's inventory {site / 'objects.inv'} is missing: the book "
-                "links to it. Build the docs first (`make docs`, which `make book` does), or "
-                "set ELLIPTIC_PENDULUM_DOCS_HTML to a docs build."
+                "links to it. Build the docs into the book's output folder first (`make book` "
+                f"does: sphinx-build docs {Path(app.outdir) / 'reference'}), or set "
+                "ELLIPTIC_PENDULUM_DOCS_HTML to a docs build."
             )
         # The relative URI needs the output folder, which is known only once Sphinx runs.
         relative = os.path.relpath(site, app.outdir).replace(os.sep, "/")

@@ -6,6 +6,8 @@ test`` runs them), whatever its own marks: the folder is the tier.
 
 from __future__ import annotations
 
+import os
+import shutil
 from pathlib import Path
 
 import pytest
@@ -17,3 +19,19 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
     for item in items:
         if _HERE in Path(str(item.path)).resolve().parents:
             item.add_marker(pytest.mark.slow)
+
+
+BROWSERS = ["chromium", "chromium-browser", "google-chrome", "google-chrome-stable"]
+
+
+@pytest.fixture(scope="session")
+def chromium() -> str:
+    """The headless browser of test_browser and test_site (Debian's chromium)."""
+    for name in BROWSERS:
+        path = shutil.which(name)
+        if path:
+            return path
+    message = "no Chromium found (apt-get install chromium)"
+    if os.environ.get("CI", "").lower() == "true":
+        pytest.fail(message + "; CI must run the browser check", pytrace=False)
+    pytest.skip(message)

@@ -79,3 +79,15 @@ def test_book_build_output_is_quiet(book_build: Build) -> None:
         if re.search(r"WARNING|Warning\b|Traceback|ERROR|CRITICAL|without encryption", line)
     ]
     assert noisy == []
+
+
+def test_every_page_states_the_licence(built_book) -> None:
+    # book/_templates/licence.html, in every page's footer, links to the licence page.
+    missing = [
+        p.name for p in sorted(built_book.glob("*.html"))
+        if "Text and figures: CC BY 4.0; code: MIT" not in p.read_text(encoding="utf-8")
+    ]
+    assert missing == []
+    about = (built_book / "about.html").read_text(encoding="utf-8")
+    assert 'id="licence"' in about and "https://creativecommons.org/licenses/by/4.0/" in about
+    assert 'href="about.html#licence"' in (built_book / "energy.html").read_text(encoding="utf-8")

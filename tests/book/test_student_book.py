@@ -17,7 +17,7 @@ from pathlib import Path
 import pytest
 
 from tests.book.test_notebooks import SYNTHETIC
-from tests.conftest import BOOK, Build, sphinx_build
+from tests.conftest import BOOK, Build
 from tools.classroom import export as ex
 from tools.classroom.labels import scan
 
@@ -62,16 +62,6 @@ def test_hide_solutions_builds_and_drops_gated_solutions(tmp_path: Path) -> None
     assert not (tmp_path / "student" / "classroom" / "instructor").exists()
 
 
-@pytest.fixture(scope="session")
-def student_book(tmp_path_factory: pytest.TempPathFactory, docs_build: Build) -> Build:
-    cache = tmp_path_factory.getbasetemp() / "jupyter-cache"  # shared with test_pdf
-    return sphinx_build(
-        BOOK, tmp_path_factory.mktemp("student") / "html",
-        "-D", "hide_solutions=1", "-D", f"nb_execution_cache_path={cache}",
-        env={"ELLIPTIC_PENDULUM_DOCS_HTML": str(docs_build.outdir)},
-    )
-
-
 @pytest.mark.slow
 def test_student_book_has_exercises_and_no_solutions(student_book: Build) -> None:
     assert student_book.returncode == 0, student_book.output[-3000:]
@@ -85,6 +75,8 @@ def test_student_book_has_exercises_and_no_solutions(student_book: Build) -> Non
     # Every exercise is there, numbered as the notebooks number it.
     assert seen == index.exercise_numbers
     assert not (student_book.outdir / "classroom" / "instructor").exists()
+    assert not list((student_book.outdir / "classroom").glob("*instructor*"))
+    assert "A teacher keeps it private" not in html  # the footer of the instructor site
 
 
 @pytest.mark.slow
@@ -92,9 +84,14 @@ def test_book_offers_each_chapter_notebook(built_book: Path) -> None:
     index = scan(BOOK)
     for page in index.exported:
         html = (built_book / f"{page}.html").read_text(encoding="utf-8")
-        link = f"classroom/student/{index.files[page]}"
-        assert f'href="{link}"' in html, page
-        assert (built_book / link).is_file()
+        # The instructor site (the default build) offers both editions, and says it is
+        # the teacher's (book/_templates/edition.html).
+        for edition in ("student", "instructor"):
+            link = f"classroom/{edition}/{index.files[page]}"
+            assert f'href="{link}"' in html, (page, edition)
+            assert (built_book / link).is_file()
+            assert f'href="classroom/elliptic-pendulum-notebooks-{edition}.zip"' in html, page
+        assert "A teacher keeps it private" in html, page
     for edition in ("student", "instructor"):
         archive = built_book / "classroom" / f"elliptic-pendulum-notebooks-{edition}.zip"
         with zipfile.ZipFile(archive) as z:
