@@ -318,3 +318,30 @@ def test_draws_on_a_figure_made_without_pyplot(name):
     call, _ = EXAMPLES[name]
     ax = Figure(figsize=(8, 4.4)).subplots()
     assert call(ax) is ax
+
+
+@pytest.mark.parametrize("name", epp.FIGURES)
+def test_its_own_figure_keeps_its_layout_when_shown_twice(name):
+    # Called without axes, a function makes its own constrained-layout figure; a notebook
+    # shows it with IPython's print_figure (bbox "tight"), and may show it again. A legend
+    # wider than the figure once made constrained layout squeeze the axes to a third of the
+    # width on the first draw and to nothing on the second, with a UserWarning that the book
+    # printed on its page. Each draw must warn of nothing and leave every axes as it was.
+    import warnings
+    from io import BytesIO
+
+    call, _ = EXAMPLES[name]
+    fig = _axes_of(call(None))[0].figure
+    positions = []
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        for fmt in ("png", "svg", "svg"):
+            fig.canvas.print_figure(BytesIO(), format=fmt, bbox_inches="tight")
+            positions.append([ax.get_position().bounds for ax in fig.axes])
+    assert np.allclose(positions[1], positions[2], atol=1e-3)
+    assert np.allclose(positions[0], positions[1], atol=1e-2)
+    # The data, not the legends, take the figure: the squeezed phase plane of the string
+    # had its one axes at 31 % of the width after the first draw (two panels of the
+    # harmonics, each with its legend beside it, take 20 % each).
+    width = sum(b[2] for b in positions[-1])
+    assert width >= 1 / 3, f"the axes span {width:.0%} of their figure"

@@ -199,5 +199,14 @@ def legend_below(ax: Any, *args: Any, gap: float = 4.0, **kwargs: Any) -> Any:
     below = max(0.0, ax.bbox.y0 - ax.xaxis.get_tightbbox(renderer).y0)  # pixels
     drop = below / fig.dpi + gap / 72  # inches
     anchor = ax.transAxes + ScaledTranslation(0.0, -drop, fig.dpi_scale_trans)
-    return ax.legend(*args, loc="upper center", bbox_to_anchor=(0.5, 0.0), bbox_transform=anchor,
-                     borderaxespad=0.0, **kwargs)
+    legend = ax.legend(*args, loc="upper center", bbox_to_anchor=(0.5, 0.0),
+                       bbox_transform=anchor, borderaxespad=0.0, **kwargs)
+    # A legend wider than the figure makes constrained layout squeeze the axes to leave room
+    # for it on both sides, to nothing by the second draw: fewer columns, more rows instead.
+    ncol = int(kwargs.get("ncol", 1))
+    while ncol > 1 and legend.get_window_extent(renderer).width > 0.95 * fig.bbox.width:
+        ncol -= 1
+        kwargs["ncol"] = ncol
+        legend = ax.legend(*args, loc="upper center", bbox_to_anchor=(0.5, 0.0),
+                           bbox_transform=anchor, borderaxespad=0.0, **kwargs)
+    return legend
