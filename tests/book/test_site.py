@@ -283,10 +283,13 @@ def test_the_site_holds_its_reference(copies: dict, site: str) -> None:
     assert any('href="reference/api.html#elliptic_pendulum.' in t for t in pages.values())
 
 
-# Wait until Sphinx's search has listed its results and made their snippets.
+# Wait until Sphinx's search has listed its results and made their snippets: it fetches every
+# page it lists, one after another, which took more than 30 s on a loaded 2-core CI machine;
+# the wait ends as soon as the snippets are there, or after 3 minutes.
 SEARCH = r"""
 (async () => {
-  for (let i = 0; i < 300; i++) {
+  const deadline = Date.now() + 180000;
+  while (Date.now() < deadline) {
     const items = document.querySelectorAll('#search-results li');
     const snippets = [...document.querySelectorAll('#search-results li p.context')]
       .filter((p) => p.textContent.trim().length > 20);
