@@ -58,7 +58,7 @@ prf_realtyp_to_countertyp = {"lemma": "proposition"}
 # --- Bibliography -----------------------------------------------------------------------
 bibtex_bibfiles = ["references.bib"]
 bibtex_default_style = "unsrt"
-bibtex_reference_style = "author_year"
+bibtex_reference_style = "label"
 
 # --- Cross references -------------------------------------------------------------------
 numfig = True

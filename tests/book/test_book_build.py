@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import html
 import re
 
 import pytest
@@ -91,3 +92,37 @@ def test_every_page_states_the_licence(built_book) -> None:
     about = (built_book / "about.html").read_text(encoding="utf-8")
     assert 'id="licence"' in about and "https://creativecommons.org/licenses/by/4.0/" in about
     assert 'href="about.html#licence"' in (built_book / "energy.html").read_text(encoding="utf-8")
+
+
+def test_each_browser_tab_names_the_page_then_the_book(built_book) -> None:
+    # The tab is the page's <title>: "<page> — <book>", from conf.py's html_title; the cover,
+    # headed by the book's own name, names it once (it read the name twice).
+    html_title = re.search(r'^html_title = "(.+)"$', (BOOK / "conf.py").read_text(), re.M).group(1)
+
+    def title(page: str) -> str:
+        text = (built_book / page).read_text(encoding="utf-8")
+        return html.unescape(re.search(r"<title>(.*?)</title>", text, re.S).group(1).strip())
+
+    assert title("index.html") == html_title
+    assert title("energy.html").endswith(" \N{EM DASH} " + html_title)
+
+
+def test_citations_in_the_text_carry_the_numbers_of_the_reference_list(built_book) -> None:
+    # The list is numbered in citation order (unsrt); the text must cite by the same number
+    # (it cited author-year beside a numbered list). Expected: the label that
+    # sphinxcontrib-bibtex prints in front of each entry of references.html.
+    listed = dict(re.findall(
+        r'<div class="citation" id="([^"]+)"[^>]*>\s*<span class="label">'
+        r'<span class="fn-bracket">\[</span>([^<]+)<span class="fn-bracket">\]</span>',
+        (built_book / "references.html").read_text(encoding="utf-8")))
+    assert len(listed) >= 10, listed
+    cited = 0
+    for page in built_book.glob("*.html"):
+        text = page.read_text(encoding="utf-8")
+        for span in re.findall(r'<span class="bibtex-citation"[^>]*>(.*?)</span>', text, re.S):
+            links = re.findall(r'href="references\.html#([^"]+)"[^>]*>([^<]*)</a>', span)
+            assert links, (page.name, span)
+            for target, shown in links:
+                assert shown == listed[target], (page.name, span)
+                cited += 1
+    assert cited >= 30, cited
