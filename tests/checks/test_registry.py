@@ -6,6 +6,7 @@ import textwrap
 import pytest
 
 from elliptic_pendulum import registry
+from elliptic_pendulum.checks.registry import _RANGE
 from elliptic_pendulum.symbolic import identities
 from tests.conftest import ROOT
 
@@ -15,7 +16,7 @@ CHECKS = registry.scan(BOOK)
 
 def test_the_scanner_finds_the_books_checks():
     assert len(CHECKS) > 100
-    assert {c.kind for c in CHECKS} == set(registry.KINDS[:3])
+    assert {c.kind for c in CHECKS} == set(registry.KINDS[:4])
 
 
 def test_every_claim_has_a_check_or_a_justified_status():
@@ -33,7 +34,7 @@ def test_every_status_is_justified():
 
 def test_every_identity_the_book_checks_is_named_and_has_a_mutant():
     for c in CHECKS:
-        if c.kind == "sympy identity":
+        if c.kind in {"sympy identity", "arithmetic"}:
             assert c.name, f"{c.page}.md:{c.line}: verify.identity of a statement without a name"
             assert c.mutant, f"{c.page}.md:{c.line}: {c.name} has no mutant"
 
@@ -110,11 +111,21 @@ def test_the_table_has_one_row_per_claim():
     assert all(row.count(" | ") >= 3 for row in rows[2:])
 
 
-def test_no_check_claims_a_wide_range():
-    # A label such as "(1)-(46)" would cover every claim with one check; the widest honest one
-    # is "(5)-(7)", the solution (7) of (5) with omega_0 from (6).
-    for c in CHECKS:
-        assert len(registry.claims_of(c.claim)) <= 3, f"{c.page}.md:{c.line}: {c.claim}"
+def test_each_check_is_credited_to_the_one_claim_it_checks():
+    # A range such as "(14)-(15)" credited the definition (14) with the identity of (15); a
+    # check now names the equation it checks ("(35), (41)": one formula that is both).
+    ranges = [f"{c.page}.md:{c.line}: {c.claim}" for c in CHECKS
+              if _RANGE.search(c.claim) and _RANGE.search(c.claim).group(2)]
+    assert ranges == []
+
+
+def test_the_one_line_evaluations_are_not_counted_as_identities():
+    # The statements that are an evaluation or a substitution (a value at G = 1, a shift by
+    # 2 pi, (45) once its two premises are substituted) are of kind "arithmetic".
+    kinds = {e.name: e.kind for e in identities()}
+    for name in ("eq22_at_K1", "eq23_at_K1", "eq42_at_K1", "I_uu_at_K1", "eq38", "eq45"):
+        assert kinds[name] == "arithmetic", name
+    assert {c.kind for c in CHECKS if c.name == "eq45"} == {"arithmetic"}
 
 
 def test_every_check_of_no_numbered_claim_has_a_row_of_its_own():

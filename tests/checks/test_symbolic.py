@@ -216,3 +216,12 @@ def test_printed_erratum_fails_numerically(err):
     rng = np.random.default_rng(7)
     assert _numeric_residual(err.printed, rng) > 1e-6
     assert _numeric_residual(err.corrected, rng) < 1e-20
+
+
+@pytest.mark.parametrize("stmt", [e for e in IDENTITIES if e.positive_radicands],
+                         ids=[e.name for e in IDENTITIES if e.positive_radicands])
+def test_every_statement_that_splits_radicals_has_a_domain_checked_by_arithmetic(stmt):
+    # The splitting is true on the domain only: the domain must be stated as intervals that
+    # verify.identity samples, and the statement must hold at those points without it.
+    assert stmt.where, stmt.name
+    assert max(stmt.domain_residuals()) < 1e-20, stmt.name

@@ -1,6 +1,7 @@
 """The book's check helper (verify.py): each check passes on the truth, fails on a wrong formula,
 and fails when its mutant would pass too (a check that cannot fail is caught where written)."""
 
+import dataclasses
 import math
 
 import pytest
@@ -15,8 +16,9 @@ x = sp.Symbol("x", real=True)
 def test_identity_passes_and_names_its_mutant():
     v = verify.identity(identity("eq26"))
     assert v.claim == "(26)" and v.kind == "sympy identity"
-    assert "8K_1" in v.text and v.display  # the statement is shown above the verdict
-    assert str(v).startswith("✔ (26) holds identically")
+    assert "8K_1" in v.details and v.display  # the statement is shown above the verdict
+    assert str(v).startswith("✔ (26) holds for $0 < \\alpha < 1$")
+    assert "<details>" in v._repr_markdown_()  # the details one click away
     assert v._repr_markdown_().startswith("$$\n")
 
 
@@ -42,12 +44,13 @@ def _period_error(T):
 def test_numeric_passes_rejects_and_reports_its_mutant():
     v = verify.numeric("(8)", _period_error, lambda: 2 * math.pi, lambda: 4 * math.pi,
                        tol=1e-12, over="one period", mutant_label="4 pi")
-    assert v.kind == "numerical" and "rejects the mutant 4 pi" in v.text
+    assert v.kind == "numerical" and str(v) == "✔ (8) holds: max |residual| 0 over one period."
+    assert "A wrong version, 4 pi, is rejected" in v.details
 
 
 def test_numeric_without_a_mutant_says_so():
     v = verify.numeric("(8)", _period_error, lambda: 2 * math.pi, tol=1e-12, over="x")
-    assert v.text.endswith("; no mutant")
+    assert v.details.endswith("No wrong version is tried.")
 
 
 def test_numeric_fails_on_a_wrong_formula():
@@ -68,6 +71,30 @@ def test_numeric_treats_nan_as_failure():
 
 
 def test_fact():
-    assert str(verify.fact("(14)", True, "xi stays in [-1, 1]")) == "✔ (14) xi stays in [-1, 1]"
+    assert str(verify.fact("(14)", True, "xi stays in [-1, 1]")) == "✔ (14) xi stays in [-1, 1]."
     with pytest.raises(AssertionError, match="not so"):
         verify.fact("(14)", False, "xi stays in [-1, 1]")
+
+
+def test_a_statement_on_a_domain_is_checked_there_and_fails_beyond():
+    # (13)'s root 2 omega_0 cos(theta/2) holds for |theta| < pi only: sympy's radical
+    # splitting assumes it; the verdict states the domain, and arithmetic without the
+    # splitting confirms it inside and finds 4 cos(1/4) = 3.88 at theta = 2 pi + 1/2.
+    e = identity("eq13_root")
+    v = verify.identity(e)
+    assert "holds for $- \\pi < \\theta < \\pi$, not beyond" in str(v)
+    assert "differ by 3.9" in v.details
+    assert abs(e.value_at(dict(e.outside)) - 4 * math.cos(0.25)) < 1e-12
+    # With the domain widened to (-pi, 3 pi), the check must fail.
+    wide = dataclasses.replace(e, where=((e.where[0][0], -sp.pi, 3 * sp.pi),))
+    with pytest.raises(AssertionError, match="fails at a point of its domain"):
+        verify.identity(wide)
+    # With its outside point moved inside, the check must fail too.
+    inside = dataclasses.replace(e, outside=((e.where[0][0], sp.Rational(1, 2)),))
+    with pytest.raises(AssertionError, match="holds outside its domain"):
+        verify.identity(inside)
+
+
+def test_an_evaluation_says_it_is_arithmetic():
+    v = verify.identity(identity("eq38"))
+    assert v.kind == "arithmetic" and "follows by arithmetic" in str(v)

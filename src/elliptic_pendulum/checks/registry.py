@@ -43,30 +43,34 @@ CLAIMS: tuple[str, ...] = (
     "crossing angles",
 )
 
-KINDS = ("sympy identity", "independent numerical check", "numerical fact",
+#: "arithmetic": a one-line evaluation that sympy does (a value at an end point, a shift by
+#: 2 pi), counted apart from the identities it would otherwise inflate.
+KINDS = ("sympy identity", "independent numerical check", "numerical fact", "arithmetic",
          "proof in the text only", "definition")
 
 #: Claims whose status is not a computation, with why (kind, justification).
 STATUS: dict[str, tuple[str, str]] = {
     "(1)": ("definition", "the bob's position and the rod's pull, read off the figure"),
     "(2)": ("definition", "Newton's second law for the bob: the model itself"),
-    "(5)": ("definition", "the small-angle model sin(theta) ~ theta, an approximation of (3)"),
-    "(6)": ("definition", "names omega_0 = sqrt(g / l)"),
-    "(11)": ("definition", "names theta_0 by cos(theta_0) = -c_1 / (2 omega_0^2)"),
-    "(14)": ("definition", "names xi = sin(theta/2) / alpha"),
-    "(17)": ("definition", "names E_1, the incomplete elliptic integral"),
-    "(18)": ("definition", "names K_1 = E_1(1)"),
-    "(19)": ("definition", "names G, the inverse of E_1"),
-    "(20)": ("definition", "the periodic extension f-bar of Lemma 2.2"),
-    "(21)": ("definition", "the staircase extension f-hat of Lemma 2.3"),
+    "(5)": ("definition", r"the small-angle model $\sin\theta \approx \theta$, an approximation "
+                          "of (3)"),
+    "(6)": ("definition", r"names $\omega_0 = \sqrt{g/\ell}$"),
+    "(11)": ("definition", r"names $\theta_0$ by $\cos\theta_0 = -c_1/(2\omega_0^2)$"),
+    "(14)": ("definition", r"names $\xi = \sin(\theta/2)/\alpha$"),
+    "(17)": ("definition", r"names $E_1$, the incomplete elliptic integral"),
+    "(18)": ("definition", r"names $K_1 = E_1(1)$"),
+    "(19)": ("definition", r"names $G$, the inverse of $E_1$"),
+    "(20)": ("definition", r"the periodic extension $\bar f$ of Lemma 2.2"),
+    "(21)": ("definition", r"the staircase extension $\hat f$ of Lemma 2.3"),
     "(24)": ("proof in the text only",
-             "that every solution of (3) with this energy is (25), so its xi is (24): "
-             "uniqueness for (3); the constants xi = +-1 solve (15) but not (3)"),
-    "(31)": ("definition", "names H_0, an integral"),
-    "(36)": ("definition", "names H_1, an integral"),
-    "(40)": ("definition", "names I = arcsin G"),
+             r"that every solution of (3) with this energy is (25), so its $\xi$ is (24): "
+             r"uniqueness for (3); the constants $\xi = \pm 1$ solve (15) but not (3)"),
+    "(31)": ("definition", r"names $H_0$, an integral"),
+    "(36)": ("definition", r"names $H_1$, an integral"),
+    "(40)": ("definition", r"names $I = \arcsin G$"),
     "(46)": ("proof in the text only",
-             "that every rotation is +-2 I-hat(omega_0 t / gamma + c_4): uniqueness for (3)"),
+             r"that every rotation is $\pm 2\hat I(\omega_0 t/\gamma + c_4)$: uniqueness "
+             "for (3)"),
     "Lemma 2.1": ("proof in the text only", "the mean value theorem; a statement about all f"),
 }
 
@@ -207,14 +211,14 @@ def _mutant_label(call: ast.Call, position: int) -> str:
     return _literal(_keyword(call, "mutant_label")) or ast.unparse(node)
 
 
-def _identities_of(arg: ast.AST, loops, assigned, stmts) -> list[tuple[str, str, str]]:
-    """Return (name, claim, mutant label) of the statements a verify.identity argument names."""
+def _identities_of(arg: ast.AST, loops, assigned, stmts) -> list[tuple[str, str, str, str]]:
+    """Return (name, claim, mutant label, kind) of the statements a verify.identity names."""
     from sympy import latex
 
-    def named(name: str) -> tuple[str, str, str]:
+    def named(name: str) -> tuple[str, str, str, str]:
         e = stmts()[name]  # KeyError for an unknown name: the registry test reports it
         label = e.mutant_label or (f"${latex(e.mutant)}$" if e.mutant is not None else "")
-        return name, e.equation, label
+        return name, e.equation, label, e.kind
 
     if isinstance(arg, ast.Name) and arg.id in assigned:
         arg = assigned[arg.id]
@@ -232,7 +236,7 @@ def _identities_of(arg: ast.AST, loops, assigned, stmts) -> list[tuple[str, str,
             return [named(literal)]
         if func == "Identity" and len(arg.args) >= 2:
             return [(_literal(arg.args[0]) or "", _literal(arg.args[1]) or "",
-                     _mutant_label(arg, 7))]
+                     _mutant_label(arg, 7), _literal(_keyword(arg, "kind")) or "sympy identity")]
     return []
 
 
@@ -274,8 +278,8 @@ def scan(book: str | Path) -> list[Check]:
                 if func == "identity":
                     named = (_identities_of(call.args[0], loops, assigned, stmts)
                              if call.args else [])
-                    for name, label, mutant in named or [("", "", "")]:
-                        found.append(Check(label, kind, mutant=mutant, name=name, **where))
+                    for name, label, mutant, of in named or [("", "", "", kind)]:
+                        found.append(Check(label, of, mutant=mutant, name=name, **where))
                 else:
                     label = _literal(call.args[0] if call.args else None) or ""
                     mutant = _mutant_label(call, 3) if func == "numeric" else ""

@@ -97,6 +97,24 @@ class Identity:
         (``elliptic_pendulum.checks.verify.identity`` asserts that it does).
     mutant_label : str
         How the verdict names the mutant (Markdown); by default its LaTeX.
+    where : tuple
+        The domain as intervals ``(variable, low, high)``, exact: a symbol, an applied
+        function such as ``theta`` (its value), or the class :class:`G` (every value of G).
+        Required with ``positive_radicands``: :meth:`domain_residuals` evaluates the
+        residual *without* splitting radicals at points of it, so that what the splitting
+        assumed is checked by arithmetic.
+    outside : tuple
+        Pairs ``(variable, value)``: a point beyond the domain where the statement fails, to
+        show that the domain is part of the statement (:meth:`value_at`).
+    kind : str
+        ``"sympy identity"``, or ``"arithmetic"`` for a one-line evaluation or substitution
+        (a value at an end point, a shift by 2 pi) that the registry does not count as an
+        identity.
+    samples : int
+        How many points of ``where`` :meth:`domain_residuals` evaluates.
+    domain_md : str
+        The domain as the verdict states it (Markdown), when it is larger than the sampled
+        ``where`` (all real t, say); by default :meth:`domain_latex`.
     change_of_variable : tuple
         ``(x, f(v), v)``: compare integrals after the substitution x = f(v) (sympy's
         ``Integral.transform``, limits included), by linearity over each range of v, instead of
@@ -119,6 +137,11 @@ class Identity:
     mutant: sp.Expr | None = None
     mutant_label: str = ""
     change_of_variable: tuple = ()
+    where: tuple = ()
+    outside: tuple = ()
+    kind: str = "sympy identity"
+    samples: int = 6
+    domain_md: str = ""
 
     def mutant_identity(self) -> Identity:
         """Return the same statement with the mutant as its right-hand side."""
@@ -172,6 +195,60 @@ class Identity:
     def check(self) -> bool:
         """Return True iff ``sympy.simplify(self.residual()) == 0``."""
         return bool(sp.simplify(self.residual()) == 0)
+
+    def domain_latex(self) -> str:
+        r"""Return the domain ``where`` as LaTeX, e.g. ``-\pi < \theta < \pi``."""
+        def name(var):
+            return "G" if var is G else sp.latex(var).replace(r"{\left(t \right)}", "")
+        return ", ".join(f"{sp.latex(lo)} < {name(v)} < {sp.latex(hi)}"
+                         for v, lo, hi in self.where)
+
+    def value_at(self, point: dict) -> float:
+        """Return |lhs - rhs| at ``point``, radicals as principal roots (no splitting), 30 digits.
+
+        ``point`` maps symbols, applied functions (``theta``), derivatives, or the class
+        :class:`G` (every value of G) to exact numbers; anything left is given a value by
+        :meth:`_default`, inside the note's standing assumptions.
+        """
+        r = replace(self, positive_radicands=False).residual()
+        for d in sorted(r.atoms(sp.Derivative), key=lambda d: -d.derivative_count):
+            r = r.subs(d, point.get(d, sp.Rational(3, 10)))
+        for f in r.atoms(sp.core.function.AppliedUndef) | r.atoms(G):
+            value = point.get(f, point.get(type(f)))
+            r = r.subs(f, value if value is not None else self._default(f))
+        r = r.subs({v: point.get(v, self._default(v)) for v in r.free_symbols})
+        return abs(complex(sp.N(r, 30)))
+
+    @staticmethod
+    def _default(v) -> sp.Expr:
+        # A fixed value inside the standing assumptions: positive constants positive,
+        # 0 < alpha, gamma < 1, beta > 1, |z|, |G| < 1, |theta| small enough for regime II.
+        name = getattr(v, "name", type(v).__name__)
+        if getattr(v, "is_integer", False):
+            return sp.Integer(2)
+        if name in {"alpha", "gamma"}:
+            return sp.Rational(7, 10)
+        if name == "beta":
+            return sp.Rational(17, 10)
+        if name in {"theta", "z", "s", "G"}:
+            return sp.Rational(2, 10)
+        return sp.Rational(13, 10) if getattr(v, "is_positive", False) else sp.Rational(-4, 10)
+
+    def domain_residuals(self) -> list[float]:
+        """Return :meth:`value_at` at ``samples`` points spread over ``where`` (none if empty).
+
+        The k-th point puts variable i at the fraction (k + 1/2) * phi_i (mod 1) of its
+        interval, phi_i the golden ratio's powers: spread, never at an end point.
+        """
+        golden = (1 + sp.sqrt(5)) / 2
+        points = []
+        for k in range(self.samples if self.where else 0):
+            point = {}
+            for i, (v, lo, hi) in enumerate(self.where):
+                frac = sp.Rational(sp.N(((k + sp.Rational(1, 2)) * golden ** (i + 1)) % 1, 12))
+                point[v] = lo + (hi - lo) * frac
+            points.append(self.value_at(point))
+        return points
 
     def latex(self) -> str:
         """Return the statement as LaTeX, lhs = rhs."""

@@ -1,20 +1,23 @@
-r"""Checks with a one-line verdict, for the book's cells: mathematics in view, machinery folded.
+r"""Checks with a verdict a student reads at a glance, for the book's cells.
 
 A book page shows a derivation, then a cell whose input is folded (tag ``hide-input``) and whose
-output is the outcome of the check in one line, for example::
+output is the outcome of the check: one sentence that says what holds and how well, and, one
+click away (a ``<details>`` element), how it was checked::
 
-    (15) holds identically (sympy); it rejects the mutant (ξ')² = ω₀²(1 − ξ²)(1 + α²ξ²).
-    (26) max relative error 2e-16 over 20 swings (tolerance 1e-12); rejects 8 K₁ (error 1).
+    ✔ (15) holds identically: sympy reduces the difference of its two sides to 0.
+    ✔ (26) holds: max relative error 2.0e-16 over 20 swings.
 
-Every check here *asserts*: a failing check raises ``AssertionError`` and stops the build. And
-every check of a formula also runs a *mutant* of it (a changed coefficient, sign, exponent or
-argument: the mistake a reader could make) and asserts that the check rejects it, so that a check
-which cannot fail is caught where it is written.
+Every check here *asserts*: a failing check raises ``AssertionError`` and stops the build. A
+check of a formula may also run a *mutant* of it (a changed coefficient, sign, exponent or
+argument: the mistake a reader could make) and then asserts that the check rejects it, so that
+a check which cannot fail is caught where it is written; a check with no mutant says so in its
+details.
 
 Three kinds, named after what backs the claim:
 
-- :func:`identity`: a :class:`.Identity` that sympy reduces to 0, and
-  its mutant (``Identity.mutant``) that sympy does not;
+- :func:`identity`: a :class:`.Identity` that sympy reduces to 0, and its mutant
+  (``Identity.mutant``) that sympy does not; a statement that holds on a domain only is also
+  evaluated at points of it, and beyond it where a point is given;
 - :func:`numeric`: a residual function applied to the formula and to its mutant, with a tolerance
   between the two;
 - :func:`fact`: a numerical fact that is not a formula with a natural mutant (a range, a sign,
@@ -47,25 +50,34 @@ class _Identity(Protocol):
 class Verdict:
     """The outcome of one passed check: what was claimed, by which kind of check, and how.
 
-    Jupyter and myst-nb show it as one line of Markdown (``_repr_markdown_``), preceded by the
-    displayed equation when there is one; ``str`` gives the same line as plain text.
+    ``text`` is the sentence a reader sees; ``details`` how it was checked (tolerances, the
+    mutant rejected, the domain). Jupyter and myst-nb show it as Markdown
+    (``_repr_markdown_``): the displayed equation when there is one, the sentence, then the
+    details folded in a ``<details>`` element; ``str`` gives the sentence as plain text.
     """
 
     claim: str
     kind: str
     text: str
     display: str = ""
+    details: str = ""
 
     def __str__(self) -> str:
-        """Return the verdict as one line of plain text."""
-        return f"✔ {self.claim} {self.text}"
+        """Return the verdict's sentence as plain text."""
+        return f"✔ {self.claim} {self._sentence()}"
+
+    def _sentence(self) -> str:
+        return self.text if self.text.endswith((".", "!", "?")) else self.text + "."
 
     def __repr__(self) -> str:
         """Return the same line: a verdict at the end of a cell reads as text."""
         return str(self)
 
     def _repr_markdown_(self) -> str:
-        line = f"✔ **{self.claim}** {self.text}"
+        line = f"✔ **{self.claim}** {self._sentence()}"
+        if self.details:
+            line += ("\n\n<details><summary>How it was checked</summary>\n\n"
+                     f"{self.details}\n\n</details>")
         return f"$$\n{self.display}\n$$\n\n{line}" if self.display else line
 
 
@@ -81,7 +93,13 @@ def _fmt(x: float) -> str:
 
 
 def identity(ident: _Identity, *, show: bool = True) -> Verdict:
-    """Assert that a sympy identity holds and that its mutant does not; return the verdict.
+    r"""Assert that a sympy identity holds and that its mutant does not; return the verdict.
+
+    A statement with a domain (``ident.where``) is also evaluated, its radicals as principal
+    roots, at points of the domain (each difference below 1e-20), and at ``ident.outside``
+    (where it must fail): sympy's radical splitting, true on the domain only, is then checked
+    by arithmetic. A statement of kind ``"arithmetic"`` (a value at an end point, a shift)
+    says that it is no more than that.
 
     Parameters
     ----------
@@ -94,23 +112,59 @@ def identity(ident: _Identity, *, show: bool = True) -> Verdict:
     Raises
     ------
     AssertionError
-        If sympy does not reduce the statement to 0, or reduces its mutant to 0.
+        If sympy does not reduce the statement to 0, or reduces its mutant to 0, or the
+        statement fails at a point of its domain, or holds at its point outside.
 
     Examples
     --------
     >>> from elliptic_pendulum.symbolic import identity as named
     >>> print(identity(named("eq13")))
-    ✔ (13) holds identically (sympy)...
+    ✔ (13) holds identically: sympy reduces the difference of its two sides to 0.
+    >>> print(identity(named("eq13_root")))
+    ✔ (13) holds for $- \pi < \theta < \pi$, not beyond: sympy reduces ... to 0 there.
     """
     _require(ident.check(), f"{ident.equation} ({ident.name}): sympy does not confirm it")
-    text = "holds identically (sympy)"
+    kind = getattr(ident, "kind", "sympy identity")
+    where = getattr(ident, "where", ())
+    outside = getattr(ident, "outside", ())
+    details = []
+    if kind == "arithmetic":
+        text = "follows by arithmetic: sympy evaluates both sides to the same value"
+    elif where:
+        domain = getattr(ident, "domain_md", "") or f"${ident.domain_latex()}$"  # type: ignore[attr-defined]
+        at = ident.domain_residuals()  # type: ignore[attr-defined]
+        _require(max(at) <= 1e-20, f"{ident.name}: fails at a point of its domain ({max(at):.3g})")
+        text = (f"holds for {domain}{', not beyond' if outside else ''}: sympy reduces the "
+                "difference of its two sides to 0 there")
+        details.append(
+            f"Sympy splits square roots as if their radicands were positive, which is true "
+            f"for {domain} only; without that step the difference is below $10^{{-20}}$ at "
+            f"{len(at)} points of it.")
+        if outside:
+            off = ident.value_at(dict(outside))  # type: ignore[attr-defined]
+            _require(off > 1e-6, f"{ident.name}: holds outside its domain too")
+            point = ", ".join(f"${_tex(v)} = {_tex(x)}$" for v, x in outside)
+            details.append(f"Beyond it the statement is false: at {point} the two sides "
+                           f"differ by {_fmt(off)}.")
+    else:
+        text = "holds identically: sympy reduces the difference of its two sides to 0"
     mutant = getattr(ident, "mutant", None)
     if mutant is not None:
         wrong = ident.mutant_identity()  # type: ignore[attr-defined]
         _require(not wrong.check(), f"{ident.name}: the check cannot tell the mutant apart")
         label = getattr(ident, "mutant_label", "") or f"${wrong.latex()}$"
-        text += f"; it rejects the mutant {label}"
-    return Verdict(ident.equation, "sympy identity", text, ident.latex() if show else "")
+        details.append(f"A wrong version, {label}, is rejected: sympy does not reduce it "
+                       "to 0.")
+    else:
+        details.append("No wrong version is tried.")
+    return Verdict(ident.equation, kind, text, ident.latex() if show else "", " ".join(details))
+
+
+def _tex(x: Any) -> str:
+    """LaTeX of a sympy object, without importing sympy here (it has its own printer)."""
+    printer = getattr(x, "_repr_latex_", None)
+    text = printer() if printer is not None else str(x)
+    return text.strip("$").replace("\\displaystyle ", "").replace(r"{\left(t \right)}", "")
 
 
 def numeric(
@@ -167,14 +221,17 @@ def numeric(
     """
     err = float(residual(formula))
     _require(err <= tol, f"{claim}: {measure} {err:.3g} > tolerance {tol:.1g}")
-    text = f"{measure} {_fmt(err)} over {over} (tolerance {_fmt(tol)})"
+    text = f"holds: {measure} {_fmt(err)} over {over}"
+    details = f"Measured against an independent computation; the tolerance is {_fmt(tol)}."
     if mutant is not None:
         bad = float(residual(mutant))
         _require(not bad <= tol, f"{claim}: the mutant passes too ({measure} {bad:.3g})")
-        text += f"; rejects the mutant {mutant_label or 'formula'} ({measure} {_fmt(bad)})"
+        details += (f" A wrong version, {mutant_label or 'a changed formula'}, is rejected: "
+                    f"its {measure} is {_fmt(bad)}.")
     else:
-        text += "; no mutant"  # said, so that a reader sees the check is the weaker kind
-    return Verdict(claim, "numerical", text)
+        # Said, so that a reader sees the check is the weaker kind.
+        details += " No wrong version is tried."
+    return Verdict(claim, "numerical", text, details=details)
 
 
 def fact(claim: str, ok: bool, text: str) -> Verdict:
@@ -183,7 +240,7 @@ def fact(claim: str, ok: bool, text: str) -> Verdict:
     Examples
     --------
     >>> fact("(14)", -1 <= 0.3 <= 1, "xi stays in [-1, 1]")
-    ✔ (14) xi stays in [-1, 1]
+    ✔ (14) xi stays in [-1, 1].
     """
     _require(ok, f"{claim}: not so: {text}")
     return Verdict(claim, "numerical fact", text)
