@@ -92,9 +92,25 @@ def test_every_correction_rejects_its_mutant(err):
 
 def test_the_general_solution_statement():
     # Not "(25) is the general non-constant solution of (12)".
-    statement = next(e for e in ERRATA if e.kind == "statement")
+    statement = next(e for e in ERRATA if e.location == "§4, after (25)")
     assert "(12)" not in statement.corrected_text and "unique" in statement.corrected_text
     assert "rest at theta_0 for a while" in statement.comment
+
+
+def test_the_silent_repairs_are_listed_and_the_constant_of_41_is_not():
+    # A reading of the book against the note found four places that the book repaired without
+    # listing them: the signed tension, Lemma 2's missing continuity at +-a, "smooth" where
+    # Lemma 2 gives C^2, and the equilibria z = +-1 discarded as singular in §5. (41)'s
+    # c_{4,1} gives the same motion lowered by 2 pi: with arbitrary constants, no slip.
+    statements = {e.location: e for e in ERRATA if e.kind == "statement"}
+    assert {"§2, (1)", "Lemma 2, parts 2 and 3", "§4, after (25), and §6",
+            "§5, before (27)"} <= set(statements)
+    lemma = statements["Lemma 2, parts 2 and 3"]
+    assert "closed" in lemma.corrected_text and "closed" not in lemma.printed_text
+    assert "equilibri" in statements["§5, before (27)"].comment
+    assert all(e.location != "(41)" for e in ERRATA)
+    locations = [(e.location, e.kind) for e in ERRATA]
+    assert len(locations) == len(set(locations))  # the book's page looks entries up by them
 
 
 def test_no_transcription_claim_about_5():

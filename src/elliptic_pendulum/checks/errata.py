@@ -65,6 +65,15 @@ def printed_errata() -> list[Erratum]:
     # symbol is not wrong, only unexplained. Those entries carry the corrected statement only.
     return [
         Erratum(
+            "§2, (1)", "statement",
+            r"\mathbf{T} \text{ the rod's pull}, \quad T = |\mathbf{T}|",
+            r"\mathbf{T} = T\,(-\sin\theta, \cos\theta), \quad T \text{ the signed component}",
+            None, None,
+            "A magnitude is never negative, yet a rod also pushes, and the note, like the book, "
+            "finds T < 0 for large swings. (1) itself, (4) and everything after use T as the "
+            "signed component along the unit vector towards the pivot, so no result changes.",
+        ),
+        Erratum(
             "§3, case III, before (13)", "typo",
             r"(\theta')^2 = 2\omega^2(\cos\theta + 1) = 4\omega^2\cos^2\frac{\theta}{2}",
             r"(\theta')^2 = 2\omega_0^2(\cos\theta + 1) = 4\omega_0^2\cos^2\frac{\theta}{2}",
@@ -75,6 +84,19 @@ def printed_errata() -> list[Erratum]:
                      mutant_label=r"case I's $2\omega_0^2(\cos\theta - 1)$"),
             "omega for omega_0, a symbol the note does not define; (13) itself is right."
             + maybe_copy,
+        ),
+        Erratum(
+            "Lemma 2, parts 2 and 3", "statement",
+            r"f \text{ odd on } [-a, a],\ C^2 \text{ on } (-a, a),\ f'(a - 0) = 0,\ "
+            r"f''(a - 0) = B \;\Rightarrow\; \bar f \in C^2",
+            r"f \text{ odd and continuous on the closed } [-a, a],\ C^2 \text{ on } (-a, a),"
+            r"\ \ldots \;\Rightarrow\; \bar f \in C^2",
+            None, None,
+            "Without continuity at the end points the lemma is false: f = sin(pi x / (2a)) on "
+            "(-a, a) with f(+-a) = +-5 is odd, C^2 inside, f'(a - 0) = 0, yet its extension "
+            "(20) jumps at x = a; likewise for (21). Part 1 of the lemma needs f continuous at "
+            "a. The note applies the lemma to G, which is continuous on [-K_1, K_1], so its "
+            "results stand.",
         ),
         Erratum(
             "§4, after (23)", "error",
@@ -108,6 +130,15 @@ def printed_errata() -> list[Erratum]:
             "side, so its solutions are unique, and those with energy c_1 are the (25).",
         ),
         Erratum(
+            "§4, after (25), and §6", "statement",
+            r"\text{the solution is smooth (at least } C^2 \text{)}",
+            r"\text{the solution is } C^2 \text{ (Lemma 2); analytic, by the theory of sn}",
+            None, None,
+            "Lemma 2 gives C^2 and no more; that the solution is smooth, indeed analytic, is "
+            "a property of sn that the note quotes but does not prove. The same in §6, where "
+            "'I-hat is smooth' is shown as Lemma 2.3's C^2.",
+        ),
+        Erratum(
             "(26)", "notation", r"4K\left(\sin\frac{\theta_0}{2}\right)\sqrt{\ell/g}",
             r"4K_1\left(\sin\frac{\theta_0}{2}\right)\sqrt{\ell/g}", None, None,
             "K for the note's K_1 (the usual name elsewhere).",
@@ -129,6 +160,17 @@ def printed_errata() -> list[Erratum]:
             "w_0 for omega_0, a symbol the note does not define." + maybe_copy,
         ),
         Erratum(
+            "§5, before (27)", "statement",
+            r"z = \pm 1 \text{ are singular solutions; the general solution is the rest}",
+            r"z = \pm 1 \text{ are the equilibria } \theta = \pm\pi \text{, solutions of (3) "
+            r"and part of the general solution}",
+            None, None,
+            "z' = omega_0 (1 - z^2) has a Lipschitz right side, so z = +-1 are not singular "
+            "solutions: they are the pendulum at rest upside down, a motion of energy "
+            "2 omega_0^2 like the separatrix. Discarding them drops that equilibrium from the "
+            "general solution in regime III, which is (28) together with theta = pi (mod 2 pi).",
+        ),
+        Erratum(
             "§5, between (13) and (27)", "error",
             r"\frac{1}{1 - z^2} = \frac{1}{2}\left(\frac{1}{1 - z} - \frac{1}{1 + z}\right)",
             r"\frac{1}{1 - z^2} = \frac{1}{2}\left(\frac{1}{1 - z} + \frac{1}{1 + z}\right)",
@@ -137,14 +179,5 @@ def printed_errata() -> list[Erratum]:
             identity("partial_fractions"),
             "The printed right side is z/(1 - z^2). The antiderivative the note writes next, "
             "(1/2) log|(1 + z)/(1 - z)|, is that of the corrected sum, so (27) is right.",
-        ),
-        Erratum(
-            "(41)", "notation",
-            r"\theta(t) = 2\hat I\left(\frac{\omega_0 t}{\gamma} + c_{4,1}, \gamma\right)",
-            r"\theta(t) = 2\hat I\left(\frac{\omega_0 t}{\gamma} + c_{4,0}, \gamma\right)",
-            None, None,
-            "Joining (35) and (39) into one motion forces c_{4,1} = c_{4,0} - 2 K_1(gamma); since "
-            "I-hat(u - 2 K_1) = I-hat(u) - pi, the printed constant gives the same motion lowered "
-            "by 2 pi, which is also a solution of (3).",
         ),
     ]
