@@ -196,9 +196,14 @@ def test_each_zip_holds_the_notebooks_the_wheel_and_how_to_install(
 def _html_figure_numbers(site: Path, page: str) -> dict[str, str]:
     """The figures of a built page as Sphinx numbered them: {name: number}."""
     text = (site / f"{page}.html").read_text(encoding="utf-8")
-    found = re.finditer(r'id="(?P<name>[^"]+)"[^>]*>(?:(?!id=").)*?'
-                        r'<span class="caption-number">Fig\. (?P<n>\d+)', text, re.S)
-    return {m["name"]: m["n"] for m in found}
+    numbers = {}
+    # Figures do not nest, so a figure's number is the first after its opening tag (an
+    # animation's player holds ids of its own in between).
+    for m in re.finditer(r'<figure\b[^>]*\bid="(?P<name>[^"]+)"', text):
+        number = re.compile(r'<span class="caption-number">Fig\. (\d+)').search(text, m.end())
+        if number:
+            numbers[m["name"]] = number[1]
+    return numbers
 
 
 def test_the_bundled_notebooks_are_plain_jupyter(
