@@ -5,7 +5,8 @@
 #                     one self-contained folder (myst-nb cache: unchanged cells are not re-run)
 #   make book-strict  the same from clean, every notebook re-executed (what CI checks)
 #   make docs         API/reference site in docs/_build/html
-#   make notebooks    classroom notebooks, notebooks/student and notebooks/instructor
+#   make notebooks    classroom notebooks, notebooks/student and notebooks/instructor, each with
+#                     the package's wheel, requirements.txt and a README, and zipped
 #   make book-student the student site (no solutions) in book/_build/student/html, likewise
 #   make pdf          book/_build/pdf/book.pdf (solutions open) and book-student.pdf
 #   make bench        speed and accuracy tables

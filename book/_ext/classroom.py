@@ -3,7 +3,9 @@
 - ``build-finished`` (html builder): tools/classroom (the exporter) writes the notebooks into
   ``<outdir>/classroom/<edition>/NN-page.ipynb`` with the values this very build glued
   (myst-nb's ``jupyter_execute/<page>.glue.json``, so the notebook's text quotes exactly what
-  the HTML page shows), and zips each edition as ``classroom/<name>-<edition>.zip``.
+  the HTML page shows), adds what a student needs to run them (tools/classroom/bundle.py:
+  the package's wheel, built from this repository, ``requirements.txt`` and a README on
+  installing them) and zips each edition as ``classroom/<name>-<edition>.zip``.
 - ``html-page-context``: each chapter page's download menu (sphinx-book-theme) offers the
   page's student notebook and the student zip, and in the instructor site (the default
   build) the instructor notebook and zip too, as relative links into the build: they work
@@ -20,20 +22,20 @@
 
 from __future__ import annotations
 
-import zipfile
 from pathlib import Path
 from typing import Any
 
 from sphinx.application import Sphinx
 from sphinx.util import logging
 
+from tools.classroom import bundle
 from tools.classroom import export as export_notebooks
 from tools.classroom.labels import scan
 from tools.classroom.markdown import strip_solutions
 
 logger = logging.getLogger(__name__)
 FOLDER = "classroom"
-ZIP_NAME = "elliptic-pendulum-notebooks"
+ZIP_NAME = bundle.ZIP_NAME
 
 
 def _editions(app: Sphinx) -> tuple[str, ...]:
@@ -125,10 +127,11 @@ def _export(app: Sphinx, exception: BaseException | None) -> None:
     except ValueError as err:  # a page the exporter cannot translate: say which, and why
         logger.warning(f"classroom notebooks not exported: {err}", type="classroom")
         return
-    for edition in editions:
-        with zipfile.ZipFile(out / f"{ZIP_NAME}-{edition}.zip", "w", zipfile.ZIP_DEFLATED) as z:
-            for path in sorted((out / edition).glob("*.ipynb")):
-                z.write(path, f"{ZIP_NAME}-{edition}/{path.name}")
+    try:
+        bundle.bundle_editions(out, editions)
+    except RuntimeError as err:  # the wheel did not build: pip's output says why
+        logger.warning(f"classroom bundles not made: {err}", type="classroom")
+        return
     logger.info(f"classroom notebooks ({', '.join(editions)}) in {out}")
 
 

@@ -1,24 +1,32 @@
-"""The classroom notebooks (tools/classroom): two editions in the book's reading
-order, plain Jupyter Markdown, and code that runs where students are: a fresh kernel of a
-plain venv holding only ``pip install .`` (not editable) and ipykernel. That venv is cached
-in .cache/plain-venv/<hash of pyproject.toml>; the package is reinstalled when src/ changes.
+"""The classroom notebooks (tools/classroom) and the bundles a student installs at home.
+
+Two editions in the book's reading order, plain Jupyter Markdown. Each edition's zip, as the
+built sites offer it (the student site's student zip, the instructor site's instructor zip:
+the session's builds, tests/conftest.py), is unzipped alone into an empty folder; a fresh
+venv holding only ipykernel gets exactly the install command of the bundle's README (parsed
+from it), and every notebook of both editions runs there, all cells, in that venv's kernel:
+the zip holds all a student needs. Nothing of that venv is cached (a student has nothing
+either); pip's download cache makes the install quick on a second run.
 """
 
 from __future__ import annotations
 
-import hashlib
 import json
 import re
+import shlex
 import subprocess
 import sys
 import textwrap
 import time
+import zipfile
 from pathlib import Path
 
+import jupytext
 import nbformat
 import pytest
 
-from tests.conftest import BOOK, ROOT
+from tests.conftest import BOOK, ROOT, SUMMARY, Build
+from tools.classroom import bundle
 from tools.classroom import export as ex
 from tools.classroom.labels import scan
 
@@ -26,35 +34,62 @@ BOOK_INDEX = scan(BOOK)
 PAGES = BOOK_INDEX.exported
 # Markup that Jupyter would show raw.
 MYST_LEFTOVERS = re.compile(r"\{[\w:+-]+\}`|^\s*(:::|```)\{|^\s*\([\w:.-]+\)=\s*$", re.M)
-KERNEL = "plain-venv"
-
-
-def _digest(*paths: Path) -> str:
-    h = hashlib.sha256()
-    for path in paths:
-        files = sorted(p for p in path.rglob("*") if p.is_file() and "__pycache__" not in p.parts)
-        for f in files if path.is_dir() else [path]:
-            h.update(str(f.relative_to(ROOT)).encode() + b"\0" + f.read_bytes())
-    return h.hexdigest()[:16]
+# A MyST role ({eq}`...`, {numref}`...`, {math}`...`) anywhere, e.g. in a JSON dump.
+MYST_ROLE = re.compile(r"\{[\w:+-]+\}`")
+KERNEL = "bundle-venv"
+TIMES = SUMMARY.setdefault("classroom bundles", [])
 
 
 @pytest.fixture(scope="session")
-def plain_venv() -> Path:
-    """A venv with only the package (non-editable) and ipykernel, and its kernel spec."""
-    venv = ROOT / ".cache" / "plain-venv" / _digest(ROOT / "pyproject.toml")
+def bundles(built_book: Path, student_book: Build,
+            tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
+    """edition -> the folder its zip unpacks to, each zip alone in an empty folder."""
+    if student_book.returncode != 0:
+        pytest.fail("the student site did not build; see test_student_book", pytrace=False)
+    sites = {"student": student_book.outdir, "instructor": built_book}
+    folders = {}
+    for edition, site in sites.items():
+        archive = site / "classroom" / f"{bundle.bundle_name(edition)}.zip"
+        empty = tmp_path_factory.mktemp(f"unzipped-{edition}")
+        assert list(empty.iterdir()) == []
+        with zipfile.ZipFile(archive) as z:
+            z.extractall(empty)
+        (folders[edition],) = empty.iterdir()  # one folder, the one the README names
+        assert folders[edition].name == bundle.bundle_name(edition)
+    return folders
+
+
+def readme_install(folder: Path) -> list[str]:
+    """The README's install command for a laptop (the only ``python -m pip install`` line
+    of its laptop section), as argv."""
+    text = (folder / bundle.README).read_text(encoding="utf-8")
+    laptop = text.split("\n## On a laptop", 1)[1].split("\n## ", 1)[0]
+    lines = [line.strip() for line in laptop.splitlines()
+             if line.strip().startswith("python -m pip install")]
+    assert len(lines) == 1, lines
+    return shlex.split(lines[0])
+
+
+@pytest.fixture(scope="session")
+def bundle_venv(bundles: dict[str, Path], tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """A fresh venv with ipykernel, then each README's install command run in its bundle
+    (the student's first; the instructor's then finds all installed), and its kernel spec."""
+    start = time.perf_counter()
+    venv = tmp_path_factory.mktemp("bundle-venv") / "venv"
+    subprocess.run([sys.executable, "-m", "venv", str(venv)], check=True)
     python = venv / "bin" / "python"
-    pip = [str(python), "-m", "pip", "install", "--quiet"]
-    if not (venv / "ready").exists():
-        subprocess.run([sys.executable, "-m", "venv", "--clear", str(venv)], check=True)
-        subprocess.run([*pip, str(ROOT), "ipykernel"], check=True, cwd=venv)
-        (venv / "installed-src").write_text(_digest(ROOT / "src", ROOT / "pyproject.toml"))
-        subprocess.run([str(python), "-m", "ipykernel", "install", "--prefix", str(venv),
-                        "--name", KERNEL], check=True, capture_output=True)
-        (venv / "ready").write_text("")
-    src = _digest(ROOT / "src", ROOT / "pyproject.toml")
-    if (venv / "installed-src").read_text() != src:  # the same dependencies, a new library
-        subprocess.run([*pip, "--no-deps", "--force-reinstall", str(ROOT)], check=True, cwd=venv)
-        (venv / "installed-src").write_text(src)
+    steps = [([str(python), "-m", "pip", "install", "--quiet", "ipykernel"], venv)]
+    for edition in ("student", "instructor"):
+        argv = readme_install(bundles[edition])
+        assert argv[:4] == ["python", "-m", "pip", "install"], argv
+        steps.append(([str(python), *argv[1:]], bundles[edition]))  # python: the venv's
+    for argv, cwd in steps:
+        proc = subprocess.run(argv, cwd=cwd, capture_output=True, text=True, timeout=1800)
+        assert proc.returncode == 0, f"{argv} failed:\n{proc.stdout[-3000:]}{proc.stderr[-3000:]}"
+    subprocess.run([str(python), "-m", "ipykernel", "install", "--prefix", str(venv),
+                    "--name", KERNEL], check=True, capture_output=True)
+    TIMES.append(f"fresh venv, ipykernel and the READMEs' install: "
+                 f"{time.perf_counter() - start:.1f} s")
     return venv
 
 
@@ -62,23 +97,29 @@ def _kernel_dirs(venv: Path) -> list[str]:
     return [str(venv / "share" / "jupyter" / "kernels")]
 
 
-def test_the_plain_kernel_is_the_plain_venv(plain_venv: Path, tmp_path: Path) -> None:
+def test_the_bundle_kernel_is_the_bundle_venv(bundle_venv: Path, tmp_path: Path) -> None:
     probe = textwrap.dedent("""\
-        import importlib.util, json, sys
+        import importlib.metadata, importlib.util, json, sys
         import elliptic_pendulum
         print(json.dumps({
             "executable": sys.executable,
             "package": elliptic_pendulum.__file__,
+            "version": importlib.metadata.version("elliptic-pendulum"),
+            "present": [m for m in ("ipywidgets", "jupyterlab", "sympy", "mpmath")
+                        if importlib.util.find_spec(m) is not None],
             "missing": [m for m in ("sphinx", "myst_nb", "jupytext", "docutils")
                         if importlib.util.find_spec(m) is None],
         }))
     """)
     nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(probe)])
-    ex.execute(nb, tmp_path, KERNEL, 120, _kernel_dirs(plain_venv))
+    ex.execute(nb, tmp_path, KERNEL, 120, _kernel_dirs(bundle_venv))
     seen = json.loads(nb.cells[0].outputs[0]["text"])
-    assert Path(seen["executable"]) == plain_venv / "bin" / "python"
-    # Installed into the venv, not the editable src/ of the project.
-    assert Path(seen["package"]).is_relative_to(plain_venv), seen["package"]
+    assert Path(seen["executable"]) == bundle_venv / "bin" / "python"
+    # Installed from the wheel into the venv, not the editable src/ of the project.
+    assert Path(seen["package"]).is_relative_to(bundle_venv), seen["package"]
+    assert seen["version"] == bundle.project()["version"]  # pyproject.toml's
+    # requirements.txt brought the sliders and a front end; the book's tools stayed out.
+    assert seen["present"] == ["ipywidgets", "jupyterlab", "sympy", "mpmath"]
     assert seen["missing"] == ["sphinx", "myst_nb", "jupytext", "docutils"]
 
 
@@ -86,34 +127,24 @@ def _markdown(nb: nbformat.NotebookNode) -> str:
     return "\n".join(c.source for c in nb.cells if c.cell_type == "markdown")
 
 
-@pytest.mark.slow
+@pytest.mark.parametrize("edition", ex.EDITIONS)
 @pytest.mark.parametrize("page", PAGES)
-def test_both_editions_run_in_the_plain_venv(page: str, plain_venv: Path, tmp_path: Path) -> None:
-    # The instructor edition runs once to learn the glued values (and must not fail) ...
+def test_every_notebook_of_the_bundle_runs_in_its_venv(
+    page: str, edition: str, bundles: dict[str, Path], bundle_venv: Path
+) -> None:
+    folder = bundles[edition]
+    nb = nbformat.read(folder / BOOK_INDEX.files[page], as_version=4)
     start = time.perf_counter()
-    (tmp_path / "instructor").mkdir()
-    run = ex.export_page(BOOK, BOOK_INDEX, page, "instructor", None)
-    glue = ex.harvest(run, tmp_path / "instructor", KERNEL, 600, _kernel_dirs(plain_venv))
-    seconds = {"instructor": time.perf_counter() - start}
-    editions = {e: ex.export_page(BOOK, BOOK_INDEX, page, e, glue) for e in ex.EDITIONS}
-    # ... and the shipped instructor notebook has exactly the code that ran.
-    code = [c.source for c in editions["instructor"].cells if c.cell_type == "code"]
-    assert code == [c.source for c in run.cells if c.cell_type == "code"]
-    (tmp_path / "student").mkdir()
-    start = time.perf_counter()
-    ex.execute(editions["student"], tmp_path / "student", KERNEL, 600, _kernel_dirs(plain_venv))
-    seconds["student"] = time.perf_counter() - start
-    print(f"{page}: " + ", ".join(f"{e} {s:.1f} s" for e, s in seconds.items()))
-    if page == SCREENSHOT_PAGE:
-        _screenshot(editions["student"], tmp_path / "student")
-    for edition, nb in editions.items():
-        text = _markdown(nb)
-        assert MYST_LEFTOVERS.findall(text) == [], (edition, MYST_LEFTOVERS.findall(text))
-        for name in glue:  # every glued value was pasted, none left as its name
-            assert f"`{name}`" not in text, (edition, name)
+    ex.execute(nb, folder, KERNEL, 600, _kernel_dirs(bundle_venv))  # in its folder, as Jupyter
+    TIMES.append(f"{edition} {BOOK_INDEX.files[page]}: {time.perf_counter() - start:.1f} s")
+    errors = [o for c in nb.cells if c.cell_type == "code" for o in c.get("outputs", [])
+              if o.output_type == "error"]
+    assert errors == []  # nbclient raises on the first error; this is the belt to it
+    if page == SCREENSHOT_PAGE and edition == "student":
+        _screenshot(nb, folder)
 
 
-# One student notebook, as it ran in the plain venv, pictured as JupyterLab renders it
+# One student notebook, as it ran from its bundle, pictured as JupyterLab renders it
 # (tools/figures/screenshot.py: nbconvert's lab template, local MathJax, headless Chromium),
 # kept in the build for a person to look at.
 SCREENSHOT_PAGE = "energy"
@@ -129,13 +160,102 @@ def _screenshot(nb: nbformat.NotebookNode, cwd: Path) -> None:
         return
     from tools.figures.screenshot import screenshot
 
-    number = PAGES.index(SCREENSHOT_PAGE)  # 00-index, 01-intro, ... as make notebooks names them
-    executed = cwd / f"{number:02d}-{SCREENSHOT_PAGE}-student.ipynb"
+    executed = SCREENSHOTS / BOOK_INDEX.files[SCREENSHOT_PAGE].replace(".ipynb", "-student.ipynb")
+    executed.parent.mkdir(parents=True, exist_ok=True)
     nbformat.write(nb, executed)
-    png = screenshot(executed, SCREENSHOTS / executed.with_suffix(".png").name)
+    png = screenshot(executed, executed.with_suffix(".png"))
     # A blank page or a failed shot would be a few kB; the rendered notebook is far more.
     assert png.stat().st_size > 50_000, png
     print(f"screenshot of a student notebook: {png}")
+
+
+def test_each_zip_holds_the_notebooks_the_wheel_and_how_to_install(
+    bundles: dict[str, Path],
+) -> None:
+    for edition, folder in bundles.items():
+        names = sorted(p.name for p in folder.iterdir())
+        expected = [*BOOK_INDEX.files.values(), bundle.README, bundle.REQUIREMENTS,
+                    bundle.wheel_name()]
+        assert names == sorted(expected), edition
+        readme = (folder / bundle.README).read_text(encoding="utf-8")
+        # The JupyterHub's commands are the laptop's, with --user, and as a %pip cell.
+        laptop = " ".join(readme_install(folder))
+        assert laptop.replace("install", "install --user", 1) in readme
+        assert laptop.replace("python -m pip", "%pip", 1) in readme
+        for words in ("Windows", "macOS", "Linux", "python3 -m venv .venv",
+                      r".venv\Scripts\Activate.ps1", "jupyter lab", "JupyterHub",
+                      "Restart Kernel", "CC BY 4.0", "MIT licence", bundle.CC_BY):
+            assert words in readme, (edition, words)
+        # Every dependency of pyproject.toml with its lower bound, and what only the
+        # notebooks need (the sliders, a front end).
+        wanted = [*bundle.project()["dependencies"], "ipywidgets>=8", "jupyterlab>=4"]
+        lines = (folder / bundle.REQUIREMENTS).read_text(encoding="utf-8").splitlines()
+        assert set(wanted) <= {line for line in lines if not line.startswith("#")}
+
+
+def _html_figure_numbers(site: Path, page: str) -> dict[str, str]:
+    """The figures of a built page as Sphinx numbered them: {name: number}."""
+    text = (site / f"{page}.html").read_text(encoding="utf-8")
+    numbers = {}
+    # Figures do not nest, so a figure's number is the first after its opening tag (an
+    # animation's player holds ids of its own in between).
+    for m in re.finditer(r'<figure\b[^>]*\bid="(?P<name>[^"]+)"', text):
+        number = re.compile(r'<span class="caption-number">Fig\. (\d+)').search(text, m.end())
+        if number:
+            numbers[m["name"]] = number[1]
+    return numbers
+
+
+def test_the_bundled_notebooks_are_plain_jupyter(
+    bundles: dict[str, Path], built_book: Path
+) -> None:
+    figures = 0
+    for page in PAGES:
+        numbers = _html_figure_numbers(built_book, page)  # the independent numbering
+        book_nb = jupytext.read(BOOK / f"{page}.md", fmt="md:myst")
+        captioned = [c for c in book_nb.cells if c.cell_type == "code"
+                     and c.metadata.get("mystnb", {}).get("figure", {}).get("caption")]
+        for edition, folder in bundles.items():
+            nb = nbformat.read(folder / BOOK_INDEX.files[page], as_version=4)
+            where = (edition, page)
+            # The first cell: how to install if the import fails, the licence, nothing
+            # that tells a student to leave the file alone.
+            first = nb.cells[0].source
+            assert nb.cells[0].cell_type == "markdown", where
+            assert bundle.pip_magic() in first and bundle.README in first, where
+            assert "CC BY 4.0" in first and bundle.CC_BY in first, where
+            for forbidden in ("edit the book page", "not this file", "generated from"):
+                assert forbidden not in first.lower(), where
+            # No MyST: neither in the Markdown nor in any metadata (the book's figure
+            # options held roles in their captions).
+            assert MYST_LEFTOVERS.findall(_markdown(nb)) == [], where
+            meta = json.dumps([nb.metadata, *(c.metadata for c in nb.cells)])
+            assert MYST_ROLE.findall(meta) == [] and "mystnb" not in meta, where
+            # Every captioned figure of the page: its code cell, then its caption as
+            # Markdown, numbered as the HTML book numbers it.
+            sources = [c.source for c in nb.cells]
+            for cell in captioned:
+                name = cell.metadata["mystnb"]["figure"]["name"]
+                i = sources.index(cell.source)
+                caption = nb.cells[i + 1]
+                assert caption.cell_type == "markdown", (where, name)
+                assert caption.source.startswith(
+                    f'<a id="{name}"></a>\n\n**Fig. {numbers[name]}.** '), (where, name)
+                figures += 1
+    assert figures == 2 * 25  # the 25 captioned figures of the book (grep "caption:" book/)
+
+
+def test_harvest_reads_what_the_cells_glue(bundle_venv: Path, tiny_book: Path,
+                                           tmp_path: Path) -> None:
+    # `make notebooks --execute` learns the glued values from one run of the instructor
+    # edition: the tiny book's page glues n = 300 and x = 0.123456 (SYNTHETIC below).
+    index = scan(tiny_book)
+    run = ex.export_page(tiny_book, index, "alpha", "instructor", None)
+    glue = ex.harvest(run, tmp_path, KERNEL, 120, _kernel_dirs(bundle_venv))
+    assert glue == {"n": "300", "x": "0.123456"}
+    shipped = ex.export_page(tiny_book, index, "alpha", "instructor", glue)
+    code = [c.source for c in shipped.cells if c.cell_type == "code"]
+    assert code == [c.source for c in run.cells if c.cell_type == "code"]  # what ran
 
 
 def _editions(out: Path) -> dict[str, list[Path]]:

@@ -18,6 +18,7 @@ import pytest
 
 from tests.book.test_notebooks import SYNTHETIC
 from tests.conftest import BOOK, Build
+from tools.classroom import bundle
 from tools.classroom import export as ex
 from tools.classroom.labels import scan
 
@@ -95,8 +96,10 @@ def test_book_offers_each_chapter_notebook(built_book: Path) -> None:
     for edition in ("student", "instructor"):
         archive = built_book / "classroom" / f"elliptic-pendulum-notebooks-{edition}.zip"
         with zipfile.ZipFile(archive) as z:
-            names = sorted(Path(n).name for n in z.namelist())
-        assert names == sorted(index.files.values()), edition
+            names = sorted(z.namelist())
+        # One folder: the notebooks and what installs them (tools/classroom/bundle.py).
+        files = [*index.files.values(), bundle.README, bundle.REQUIREMENTS, bundle.wheel_name()]
+        assert names == sorted(f"{bundle.bundle_name(edition)}/{f}" for f in files), edition
 
 
 @pytest.mark.slow

@@ -13,6 +13,9 @@ a book build has just executed (``--glue-from book/_build/jupyter_execute``, use
 extension book/_ext/classroom.py, whose HTML shows the same values). Values are formatted as
 myst-nb formats ``{glue:text}`name:fmt``` so integers stay integers.
 
+Each edition's folder also gets what a student needs to run it (bundle.py: the package's
+wheel, requirements.txt, a README) and is zipped as ``notebooks/<name>-<edition>.zip``.
+
 Usage::
 
     python -m tools.classroom book notebooks [--execute | --glue-from DIR]
@@ -30,6 +33,7 @@ from pathlib import Path
 import jupytext
 import nbformat
 
+from . import bundle
 from .bib import label as bib_label
 from .bib import load as load_bib
 from .bib import reference_line
@@ -96,6 +100,9 @@ def _code_cell(cell: nbformat.NotebookNode, first_glue: list[bool]) -> None:
         cell.source = re.sub(r"\n{4,}", "\n\n\n", source).strip("\n")
     if BOOK_ONLY.search(cell.source):
         raise ValueError(f"a code cell needs myst_nb or Sphinx: {cell.source[:200]!r}")
+    # The figure's caption becomes a Markdown cell under it (_caption_cell); its alt text and
+    # options are the book's (MyST roles inside), which Jupyter neither shows nor reads.
+    cell.metadata.pop("mystnb", None)
     hidden = {k for tag in cell.metadata.get("tags", []) for k in HIDDEN.get(tag, ())}
     if hidden:
         cell.metadata.setdefault("jupyter", {}).update({k: True for k in sorted(hidden)})
@@ -111,6 +118,23 @@ def _caption_cell(cell: nbformat.NotebookNode, book: Book, ctx: Context) -> list
     caption = convert_markdown(str(figure["caption"]).strip(), ctx)
     anchor = f'<a id="{name}"></a>\n\n' if name else ""
     return [f"{anchor}**Fig. {number}.** {caption}" if number else anchor + caption]
+
+
+def first_cell(book: Book, page: str, edition: str, answers: bool = False) -> str:
+    """What a notebook says first: what it is, how to install what it needs if the import
+    fails (the files beside it, bundle.py), and the licence of its text and figures."""
+    title = book.titles.get(page, page)
+    lines = [
+        f"*{bundle.TITLE}*, classroom notebook ({edition} edition): **{title}**.",
+        f"If `import elliptic_pendulum` fails, run `{bundle.pip_magic()}` in a cell here "
+        f"(the files beside this notebook, see `{bundle.README}`), then restart the kernel.",
+    ]
+    if answers:
+        lines.append("Write your answers in the empty code cell under each exercise.")
+    lines.append(
+        f"Text and figures © 2024-2026 elliptic-pendulum contributors, from the book's page "
+        f"`{page}.md`, under [CC BY 4.0]({bundle.CC_BY}); code under the MIT licence.")
+    return "\n\n".join(lines)
 
 
 def export_page(
@@ -149,13 +173,13 @@ def export_page(
                   book.exercise_numbers, book.exported[1:])
     nb = jupytext.read(book_dir / f"{page}.md", fmt="md:myst")
     cells: list[nbformat.NotebookNode] = []
-    in_solution, first_glue = False, [True]
+    in_solution, first_glue, answers = False, [True], False
     for cell in nb.cells:
         if cell.cell_type == "code":
             if not in_solution or edition == "instructor":
+                captions = _caption_cell(cell, book, ctx)
                 _code_cell(cell, first_glue)
                 cells.append(cell)
-                captions = _caption_cell(cell, book, ctx)
                 cells.extend(nbformat.v4.new_markdown_cell(t) for t in captions)
             continue
         text = convert_markdown(cell.source, ctx)
@@ -163,6 +187,7 @@ def export_page(
             if piece == "ANSWER":
                 if edition == "student":
                     cells.append(nbformat.v4.new_code_cell(""))
+                    answers = True
             elif piece == "SOLUTION-START":
                 in_solution = True
             elif piece == "SOLUTION-END":
@@ -178,10 +203,8 @@ def export_page(
         keys = list(dict.fromkeys(cited))
         cells.append(nbformat.v4.new_markdown_cell(
             "## References\n\n" + "\n".join(reference_line(k, bib[k]) for k in keys)))
-    note = (f"*Classroom notebook ({edition} edition) generated from `book/{page}.md` by "
-            "`python -m tools.classroom`: edit the book page, not this file.*")
     out = nbformat.v4.new_notebook()
-    out.cells = [nbformat.v4.new_markdown_cell(note), *cells]
+    out.cells = [nbformat.v4.new_markdown_cell(first_cell(book, page, edition, answers)), *cells]
     out.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",
                                   "language": "python"}
     out.metadata["language_info"] = {"name": "python"}
@@ -265,6 +288,8 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     for path in export(args.book, args.out, run=args.execute, glue_from=args.glue_from,
                        timeout=args.timeout):
+        print(f"wrote {path}")
+    for path in bundle.bundle_editions(args.out, EDITIONS):
         print(f"wrote {path}")
     return 0
 
