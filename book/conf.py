@@ -29,6 +29,9 @@ extensions = [
     "classroom",
     "kernels",
     "offline",
+    # book/_ext/a11y.py: WCAG 2.1 AA where docutils and myst-nb write otherwise (citations,
+    # the code cells' toggles); after myst_nb, whose toggle it rewrites.
+    "a11y",
 ]
 
 # --- MyST -------------------------------------------------------------------------------
@@ -105,5 +108,6 @@ html_theme_options = {
 }
 html_last_updated_fmt = None
 # Wide formulas scroll in their own block on a phone; see the comments in the files.
-html_css_files = ["reader.css"]
+# a11y.css: contrast, and inline formulas that are never cut off (WCAG 2.1 AA).
+html_css_files = ["reader.css", "a11y.css"]
 html_js_files = ["reader.js"]

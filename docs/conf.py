@@ -29,6 +29,8 @@ extensions = [
     "sphinx_book_theme",
     # book/_ext/offline.py: MathJax served from the build, as in the book.
     "offline",
+    # book/_ext/a11y.py: WCAG 2.1 AA where docutils writes otherwise, as in the book.
+    "a11y",
 ]
 
 myst_enable_extensions = ["dollarmath", "amsmath", "colon_fence", "deflist"]
@@ -104,7 +106,10 @@ html_static_path = [
     # wrap on a phone), one copy for both sites.
     str(Path(__file__).resolve().parents[1] / "book" / "_static"),
 ]
-html_css_files = ["reader.css"]
+html_css_files = ["reader.css", "a11y.css"]
 html_js_files = ["reader.js"]
+# The book's templates: its search button, named by its text (book/_static/a11y.css and
+# book/_ext/a11y.py say why). The book's footer templates are there too, unused here.
+templates_path = [str(Path(__file__).resolve().parents[1] / "book" / "_templates")]
 html_theme_options = {"show_toc_level": 2}
 html_last_updated_fmt = None

@@ -98,3 +98,17 @@ def test_a_statement_on_a_domain_is_checked_there_and_fails_beyond():
 def test_an_evaluation_says_it_is_arithmetic():
     v = verify.identity(identity("eq38"))
     assert v.kind == "arithmetic" and "follows by arithmetic" in str(v)
+
+
+def test_an_identity_is_shown_on_two_lines():
+    # The book's column holds about 700 px and MathJax 3 does not break a line, so the longer
+    # identities (rod_or_string's free flight, libration's G'') ran past it: the verdict
+    # shows "= rhs" under the left side, in an aligned environment, with the same LaTeX.
+    v = verify.Verdict("(1)", "sympy identity", "holds", r"\sin^{2}{x} + \cos^{2}{x} = 1")
+    shown = v._repr_markdown_().split("$$")[1].strip()
+    assert shown == (
+        "\\begin{aligned}\n&\\sin^{2}{x} + \\cos^{2}{x} \\\\\n&\\quad = 1\n\\end{aligned}"
+    )
+    # An equation of more than two members stays on one line, as written.
+    chain = verify.Verdict("(1)", "sympy identity", "holds", "a = b = c")
+    assert chain._repr_markdown_().split("$$")[1].strip() == "a = b = c"

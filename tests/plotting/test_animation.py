@@ -6,6 +6,7 @@ and phase point must be at each frame's time; the HTML itself for the network ch
 
 import gc
 import math
+import re
 import warnings
 
 import pytest
@@ -54,6 +55,20 @@ def test_html_player_is_self_contained_and_closes_its_figure():
     assert html.count("data:image/png;base64") == 4
     assert "http://" not in html and "https://" not in html
     assert "fa fa-" not in html and "\u25b6" in html  # the icons are plain characters
+
+
+def test_html_player_controls_have_names():
+    # WCAG 4.1.2 (name, role, value), as axe-core's rules button-name and label check it:
+    # every button has an aria-label, the characters drawn on them are hidden from screen
+    # readers, and the frame slider, which matplotlib leaves unnamed, is labelled.
+    html = animation_html(MOTIONS[:1], frames=2, duration=1.0)
+    buttons = re.findall(r"<button[^>]*>.*?</button>", html, re.S)
+    assert len(buttons) == 9
+    for button in buttons:
+        assert re.search(r'aria-label="[A-Z][a-z ]+"', button), button
+        assert re.search(r'<span aria-hidden="true">[^<]+</span></button>', button), button
+    sliders = re.findall(r"<input[^>]*type=\"range\"[^>]*>", html)
+    assert len(sliders) == 1 and 'aria-label="Frame"' in sliders[0]
 
 
 @pytest.mark.parametrize("kwargs, error", [

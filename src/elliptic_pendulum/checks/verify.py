@@ -78,7 +78,15 @@ class Verdict:
         if self.details:
             line += ("\n\n<details><summary>How it was checked</summary>\n\n"
                      f"{self.details}\n\n</details>")
-        return f"$$\n{self.display}\n$$\n\n{line}" if self.display else line
+        if not self.display:
+            return line
+        # An identity "lhs = rhs" is shown on two lines, "= rhs" under the left side: on one
+        # line the longer ones are wider than the book's column, and MathJax 3 does not break
+        # lines. The same LaTeX, only aligned.
+        lhs, equals, rhs = self.display.partition(" = ")
+        shown = (f"\\begin{{aligned}}\n&{lhs} \\\\\n&\\quad = {rhs}\n\\end{{aligned}}"
+                 if equals and " = " not in rhs else self.display)
+        return f"$$\n{shown}\n$$\n\n{line}"
 
 
 def _require(ok: bool, message: str) -> None:

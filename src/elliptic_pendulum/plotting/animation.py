@@ -209,7 +209,9 @@ def animation_html(motions: Motion | Sequence[Motion], duration: float | None = 
     str
         HTML with the frames embedded (base64 PNG) and the player's script inline; the CDN link
         of the player's icon font is removed and its icons replaced by plain characters, so it
-        loads nothing from the network. Show it with ``IPython.display.HTML``.
+        loads nothing from the network. Every control is a button or an input, reached with
+        the keyboard, and has a name (the frame slider "Frame"). Show it with
+        ``IPython.display.HTML``.
 
     Examples
     --------
@@ -217,6 +219,8 @@ def animation_html(motions: Motion | Sequence[Motion], duration: float | None = 
     >>> html = animation_html([ep.solve(1.0)], frames=3)
     >>> html.count("data:image/png;base64"), "https://" in html, "fa fa-" in html
     (3, False, False)
+    >>> 'type="range" aria-label="Frame"' in html
+    True
     """
     from matplotlib import pyplot as plt
 
@@ -226,6 +230,13 @@ def animation_html(motions: Motion | Sequence[Motion], duration: float | None = 
     finally:
         plt.close(anim._fig)
     html = re.sub(r"<link[^>]*font-awesome[^>]*>", "", html)
+    # Each button keeps its aria-label and title ("Play", "Next frame"); its character is a
+    # picture of that name, hidden from screen readers, which would otherwise read the
+    # characters out. The frame slider gets a name: matplotlib gives it none (WCAG 4.1.2).
     for icon, text in _ICONS.items():
-        html = html.replace(f'<i class="{icon}"></i>', text)
+        html = html.replace(f'<i class="{icon}"></i>', f'<span aria-hidden="true">{text}</span>')
+    html, sliders = re.subn(r'(<input id="_anim_slider\w*" type="range")',
+                            r'\1 aria-label="Frame"', html)
+    if sliders != 1:  # a matplotlib whose player no longer looks the same
+        raise RuntimeError("matplotlib's player has no frame slider to label")
     return html
