@@ -4,8 +4,9 @@ The notebooks cannot run sphinxcontrib-bibtex, so a citation becomes a link to a
 reference list at the end of the notebook. The labels are author-year ("Takeno, 2024";
 "Abramowitz and Stegun, 1964"): the book's pages cite by the numbers of the book's one list,
 which a notebook does not carry, so its own short list names the works. The entries give
-authors, title, where it appeared and the year. Only the plain BibTeX the book uses is understood: ``@type{key,``
-then ``field = {value}`` or ``"value"`` or a bare number, braces nested.
+authors, title, where it appeared and the year. Only the plain BibTeX the book uses is
+understood: ``@type{key,`` then ``field = {value}`` or ``"value"`` or a bare number, braces
+nested.
 """
 
 from __future__ import annotations
