@@ -45,6 +45,7 @@ import fcntl
 import json
 import os
 import subprocess
+import time
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -425,16 +426,19 @@ def survey(
 ) -> dict:
     """(site, width) -> {page: what the browser saw}, for every page of the three sites."""
     browser = Browser(chromium, tmp_path_factory.mktemp("chromium-profile"))
+    found, seconds = {}, {}
     try:
-        found = {
-            (site, width): dict(look_at(browser, folders[site], width, BESIDES[site],
-                                        axe_script))
-            for site in SITES
-            for width in WIDTHS
-        }
+        for site in SITES:
+            for width in WIDTHS:
+                start = time.perf_counter()
+                found[site, width] = dict(look_at(browser, folders[site], width,
+                                                  BESIDES[site], axe_script))
+                seconds[site, width] = time.perf_counter() - start
     finally:
         browser.close()
-    SUMMARY["accessibility"] = axe_counts(found)
+    # What the survey costs, per site and width (the CI budget is counted in minutes).
+    SUMMARY["accessibility"] = [f"{line}; {seconds[key]:.0f} s"
+                                for key, line in zip(found, axe_counts(found), strict=True)]
     # Say where the screenshots are: the builds of a test session live in a temporary folder.
     reporter = request.config.pluginmanager.get_plugin("terminalreporter")
     if reporter is not None:
