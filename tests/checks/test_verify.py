@@ -112,3 +112,14 @@ def test_an_identity_is_shown_on_two_lines():
     # An equation of more than two members stays on one line, as written.
     chain = verify.Verdict("(1)", "sympy identity", "holds", "a = b = c")
     assert chain._repr_markdown_().split("$$")[1].strip() == "a = b = c"
+
+
+def test_a_number_in_e_notation_is_kept_in_one_piece():
+    # Chromium broke "(relative 1e-12)" after the hyphen in the PDF ("1e-" / "12"): the
+    # Markdown wraps each e-notation number outside math in a span that does not break;
+    # math and plain text are left as they are.
+    v = verify.fact("(0)", True, "agrees (relative 1e-12) with $10^{-20}$ and $x_1e-3$")
+    md = v._repr_markdown_()
+    assert '<span style="white-space: nowrap">1e-12</span>' in md
+    assert "$10^{-20}$" in md and "$x_1e-3$" in md
+    assert str(v) == "✔ (0) agrees (relative 1e-12) with $10^{-20}$ and $x_1e-3$."

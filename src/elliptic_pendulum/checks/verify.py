@@ -31,6 +31,7 @@ This module changes no global state and imports nothing beyond the standard libr
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any, Protocol
@@ -74,10 +75,10 @@ class Verdict:
         return str(self)
 
     def _repr_markdown_(self) -> str:
-        line = f"✔ **{self.claim}** {self._sentence()}"
+        line = f"✔ **{self.claim}** {_unbroken(self._sentence())}"
         if self.details:
             line += ("\n\n<details><summary>How it was checked</summary>\n\n"
-                     f"{self.details}\n\n</details>")
+                     f"{_unbroken(self.details)}\n\n</details>")
         if not self.display:
             return line
         # An identity "lhs = rhs" is shown on two lines, "= rhs" under the left side: on one
@@ -87,6 +88,19 @@ class Verdict:
         shown = (f"\\begin{{aligned}}\n&{lhs} \\\\\n&\\quad = {rhs}\n\\end{{aligned}}"
                  if equals and " = " not in rhs else self.display)
         return f"$$\n{shown}\n$$\n\n{line}"
+
+
+# A number in e-notation, outside math: browsers may break a line after its hyphen
+# ("1e-" / "12", seen in the PDF), so it is kept in one piece.
+_E_NUMBER = re.compile(r"(?<![\w$\\])(\d+(?:\.\d+)?e[-+]\d+)(?![\w$])")
+
+
+def _unbroken(text: str) -> str:
+    """Wrap each e-notation number outside ``$...$`` in a span that does not break."""
+    parts = text.split("$")
+    for i in range(0, len(parts), 2):  # the even parts lie outside math
+        parts[i] = _E_NUMBER.sub(r'<span style="white-space: nowrap">\1</span>', parts[i])
+    return "$".join(parts)
 
 
 def _require(ok: bool, message: str) -> None:
