@@ -43,8 +43,8 @@ CLAIMS: tuple[str, ...] = (
     "crossing angles",
 )
 
-#: "arithmetic": a one-line evaluation that sympy does (a value at an end point, a shift by
-#: 2 pi), counted apart from the identities it would otherwise inflate.
+#: The kinds of check and of status. An arithmetic step is a one-line evaluation that sympy
+#: does (a value at an end point, a shift by 2 pi), counted apart from the identities.
 KINDS = ("sympy identity", "independent numerical check", "numerical fact", "arithmetic",
          "proof in the text only", "definition")
 

@@ -204,11 +204,13 @@ class Identity:
                          for v, lo, hi in self.where)
 
     def value_at(self, point: dict) -> float:
-        """Return |lhs - rhs| at ``point``, radicals as principal roots (no splitting), 30 digits.
+        """Return the absolute difference of the two sides at ``point``, at 30 digits.
+
+        Radicals are principal roots here: nothing is split.
 
         ``point`` maps symbols, applied functions (``theta``), derivatives, or the class
         :class:`G` (every value of G) to exact numbers; anything left is given a value by
-        :meth:`_default`, inside the note's standing assumptions.
+        ``_default``, inside the note's standing assumptions.
         """
         r = replace(self, positive_radicands=False).residual()
         for d in sorted(r.atoms(sp.Derivative), key=lambda d: -d.derivative_count):
