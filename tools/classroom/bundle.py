@@ -37,6 +37,18 @@ ZIP_NAME = "elliptic-pendulum-notebooks"
 README = "README.md"
 REQUIREMENTS = "requirements.txt"
 BUNDLE_FILES = (README, REQUIREMENTS)
+# The exercises' self-checks (tools/classroom/selfcheck), a package beside the notebooks:
+# a notebook's kernel runs in the notebook's folder and imports it from there.
+SELFCHECK = "selfcheck"
+SELFCHECK_SOURCE = Path(__file__).resolve().parent / SELFCHECK
+
+
+def copy_selfcheck(folder: Path) -> Path:
+    """folder/selfcheck: the self-check package, without caches."""
+    target = folder / SELFCHECK
+    shutil.rmtree(target, ignore_errors=True)
+    shutil.copytree(SELFCHECK_SOURCE, target, ignore=shutil.ignore_patterns("__pycache__"))
+    return target
 
 
 def bundle_name(edition: str) -> str:
@@ -88,8 +100,8 @@ def readme(edition: str, notebooks: list[str]) -> str:
     folder = bundle_name(edition)
     zip_name = folder + ".zip"
     first = notebooks[0] if notebooks else "the first notebook"
-    content = ("every chapter with its exercises (an empty cell under each one is for your "
-               "answer)" if edition == "student" else
+    content = ("every chapter with its exercises (under each one, cells for your answer and "
+               "a self-check that says whether a result is right)" if edition == "student" else
                "every chapter with its exercises and their worked solutions")
     wheel = wheel_name()
     return f"""\
@@ -97,7 +109,9 @@ def readme(edition: str, notebooks: list[str]) -> str:
 
 This folder holds the book *{TITLE}* as Jupyter notebooks, {content}; `{first}` lists
 the chapters. The notebooks use the Python package `elliptic_pendulum`, which is not on a
-package index: it is the file `{wheel}` in this folder. `{REQUIREMENTS}` lists the other
+package index: it is the file `{wheel}` in this folder; the folder `{SELFCHECK}` holds the
+exercises' self-checks, which the notebooks import from beside them (keep it next to the
+notebooks). `{REQUIREMENTS}` lists the other
 packages the notebooks import (NumPy, SciPy, SymPy, Matplotlib, mpmath, ipywidgets for the
 sliders) and JupyterLab to open them.
 
@@ -217,7 +231,8 @@ def write(folder: Path, edition: str, wheel: Path) -> list[Path]:
     shutil.copy2(wheel, folder / wheel.name)
     (folder / REQUIREMENTS).write_text(requirements(), encoding="utf-8")
     (folder / README).write_text(readme(edition, notebooks), encoding="utf-8")
-    return [folder / wheel.name, folder / REQUIREMENTS, folder / README]
+    checks = copy_selfcheck(folder)
+    return [folder / wheel.name, folder / REQUIREMENTS, folder / README, checks]
 
 
 def zip_edition(folder: Path, edition: str, zip_dir: Path) -> Path:
@@ -230,6 +245,8 @@ def zip_edition(folder: Path, edition: str, zip_dir: Path) -> Path:
         files.append(folder / wheel_name())
         for path in files:
             z.write(path, f"{name}/{path.name}")
+        for path in sorted((folder / SELFCHECK).rglob("*.py")):
+            z.write(path, f"{name}/{path.relative_to(folder).as_posix()}")
     return archive
 
 

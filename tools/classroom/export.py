@@ -33,7 +33,7 @@ from pathlib import Path
 import jupytext
 import nbformat
 
-from . import bundle
+from . import bundle, selfcheck
 from .bib import label as bib_label
 from .bib import load as load_bib
 from .bib import reference_line
@@ -130,11 +130,56 @@ def first_cell(book: Book, page: str, edition: str, answers: bool = False) -> st
         f"(the files beside this notebook, see `{bundle.README}`), then restart the kernel.",
     ]
     if answers:
-        lines.append("Write your answers in the empty code cell under each exercise.")
+        lines.append("Write your answers in the cells under each exercise; a self-check "
+                     "cell tells you whether a result is right.")
     lines.append(
         f"Text and figures © 2024-2026 elliptic-pendulum contributors, from the book's page "
         f"`{page}.md`, under [CC BY 4.0]({bundle.CC_BY}); code under the MIT licence.")
     return "\n\n".join(lines)
+
+
+def answer_cells(label: str, ctx: Context) -> list[nbformat.NotebookNode]:
+    """What a student gets under an exercise: for its results, a cell that names them and
+    the self-check that reads them (selfcheck/); for what it asks to prove or explain, a
+    Markdown cell to write in and a folded hint. An exercise without a self-check gets one
+    empty code cell."""
+    exercise = selfcheck.EXERCISES.get(label)
+    if exercise is None:
+        return [nbformat.v4.new_code_cell("")]
+    cells = []
+    if exercise.values:
+        names = "; ".join(f"`{v.name}`, {v.what}" for v in exercise.values)
+        cells.append(nbformat.v4.new_markdown_cell(
+            f"**Your results.** Work in the cell below, and leave in it {names}. Then run "
+            "the self-check under it: it says whether each result is right and, if not, "
+            "what to look at."))
+        cells.append(nbformat.v4.new_code_cell(
+            "\n".join(f"{v.name} = ...  # your {v.name}" for v in exercise.values)))
+        cells.extend(self_check_cells(label, "student"))
+    if exercise.written is not None:
+        hint = convert_markdown(exercise.written, ctx).strip()
+        cells.append(nbformat.v4.new_markdown_cell(
+            f"<details><summary><b>Hint</b> for the parts to prove or explain</summary>\n\n"
+            f"{hint}\n\n</details>"))
+        cell = nbformat.v4.new_markdown_cell(
+            "**Your answer** to the parts to prove or explain (double-click to write here).")
+        cell.metadata["classroom"] = {"written": label}
+        cells.append(cell)
+    return cells
+
+
+def self_check_cells(label: str, edition: str) -> list[nbformat.NotebookNode]:
+    """The cell that runs the self-check of exercise ``label`` on the names of its results:
+    under the student's answer cell, and under the instructor's solution (which it checks
+    against the self-check's independent reference every time the notebook runs)."""
+    exercise = selfcheck.EXERCISES[label]
+    if not exercise.values:
+        return []
+    args = ", ".join(f"{v.name}={v.name}" for v in exercise.values)
+    cell = nbformat.v4.new_code_cell(
+        f"from selfcheck import check\n\ncheck({label!r}, {args})")
+    cell.metadata["classroom"] = {"self_check": label}
+    return [cell]
 
 
 def export_page(
@@ -173,30 +218,42 @@ def export_page(
                   book.exercise_numbers, book.exported[1:])
     nb = jupytext.read(book_dir / f"{page}.md", fmt="md:myst")
     cells: list[nbformat.NotebookNode] = []
-    in_solution, first_glue, answers = False, [True], False
+    in_solution, first_glue, answers, current = False, [True], False, ""
+
+    def mark(cell: nbformat.NotebookNode) -> nbformat.NotebookNode:
+        # The instructor's solution cells say whose they are (tools/classroom/nbgrader.py
+        # turns them into nbgrader's answer cells).
+        if in_solution:
+            cell.metadata["classroom"] = {"solution": current}
+        return cell
+
     for cell in nb.cells:
         if cell.cell_type == "code":
             if not in_solution or edition == "instructor":
                 captions = _caption_cell(cell, book, ctx)
                 _code_cell(cell, first_glue)
-                cells.append(cell)
-                cells.extend(nbformat.v4.new_markdown_cell(t) for t in captions)
+                cells.append(mark(cell))
+                cells.extend(mark(nbformat.v4.new_markdown_cell(t)) for t in captions)
             continue
         text = convert_markdown(cell.source, ctx)
-        for piece in re.split(f"^{SENTINEL}(\\w[\\w-]*){SENTINEL}$", text, flags=re.MULTILINE):
-            if piece == "ANSWER":
+        pieces = re.split(f"^{SENTINEL}(\\w[\\w:-]*){SENTINEL}$", text, flags=re.MULTILINE)
+        for index, piece in enumerate(pieces):
+            marker, _, label = piece.partition(":") if index % 2 else ("", "", "")
+            if marker == "ANSWER":
                 if edition == "student":
-                    cells.append(nbformat.v4.new_code_cell(""))
+                    cells.extend(answer_cells(label, ctx))
                     answers = True
-            elif piece == "SOLUTION-START":
-                in_solution = True
-            elif piece == "SOLUTION-END":
+            elif marker == "SOLUTION-START":
+                in_solution, current = True, label
+            elif marker == "SOLUTION-END":
                 in_solution = False
+                if edition == "instructor" and current in selfcheck.EXERCISES:
+                    cells.extend(self_check_cells(current, edition))
             elif piece.strip() and (not in_solution or edition == "instructor"):
                 missing = re.search(f"{SENTINEL}MISSING (.*?){SENTINEL}", piece)
                 if missing:
                     raise ValueError(f"page {page!r} pastes {missing[1]!r}, which no cell glues")
-                cells.append(nbformat.v4.new_markdown_cell(piece.strip("\n")))
+                cells.append(mark(nbformat.v4.new_markdown_cell(piece.strip("\n"))))
     if in_solution:
         raise ValueError(f"page {page!r}: a solution-start has no solution-end")
     if cited:

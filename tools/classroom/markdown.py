@@ -254,7 +254,7 @@ def _exercise_part(name: str, arg: str, label: str, inner: list[str], ctx: Conte
         heading += f" ({title})" if title else ""
         block = ["", *(_anchor(label) if label else []), heading, "", *inner, ""]
         if name == "exercise":
-            block += [f"{SENTINEL}ANSWER{SENTINEL}", ""]
+            block += [f"{SENTINEL}ANSWER:{label}{SENTINEL}", ""]
         return block
     if name == "exercise-end":
         return ["", f"{SENTINEL}ANSWER{SENTINEL}", ""]
@@ -263,7 +263,7 @@ def _exercise_part(name: str, arg: str, label: str, inner: list[str], ctx: Conte
     # solution or solution-start: the argument is the exercise's label.
     number = ctx.exercise_numbers.get(arg, "")
     heading = "#### Solution" + (f" to Exercise {number}" if number else "")
-    block = ["", f"{SENTINEL}SOLUTION-START{SENTINEL}", "", heading, "", *inner, ""]
+    block = ["", f"{SENTINEL}SOLUTION-START:{arg}{SENTINEL}", "", heading, "", *inner, ""]
     if name == "solution":
         block += [f"{SENTINEL}SOLUTION-END{SENTINEL}", ""]
     return block
