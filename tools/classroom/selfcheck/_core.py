@@ -137,8 +137,10 @@ def judge(value: Value, answer: Any, want: Any) -> tuple[bool, str]:
         if want != 0 and got != 0 and math.copysign(1, got) != math.copysign(1, want):
             return False, f"{name} has the wrong sign."
         if want != 0:
-            off = (got - want) / abs(want)
+            # Same sign here: for a negative value, "too large" means in magnitude.
+            off = (abs(got) - abs(want)) / abs(want)
             size = "too large" if off > 0 else "too small"
+            size += " in magnitude" if want < 0 else ""
             return False, f"{name} is {100 * abs(off):.2g}% {size}."
     return False, f"{name} is not right yet: look again at {value.what}."
 
