@@ -127,8 +127,8 @@ register(
             Value("n_steps", "the number of AGM steps (`ep.agm_ratio`) that give $R$ to a "
                   "relative $10^{-6}$ at 120 degrees", kind=int,
                   hints=(Hint(lambda a, e: a == e + 1,
-                              "`ep.agm_ratio(x, 0)` is the small-angle ratio, no step yet: "
-                              "did you count the steps from one?",
+                              "`ep.agm_ratio(x, 0)` is the small-angle ratio, before any "
+                              "step: did you count it as a step?",
                               lambda e: e + 1),
                          Hint(lambda a, e: a < e,
                               "Too few: is your error relative, $|R_n/R - 1|$, and is $R$ "
