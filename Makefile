@@ -9,6 +9,8 @@
 #                     the package's wheel, requirements.txt and a README, and zipped
 #   make book-student the student site (no solutions) in book/_build/student/html, likewise
 #   make pdf          book/_build/pdf/book.pdf (solutions open) and book-student.pdf
+#   make nbgrader     the nbgrader course folder, book/_build/nbgrader: one assignment per
+#                     chapter with exercises, from the site's instructor notebooks
 #   make bench        speed and accuracy tables
 #   make test         everything: unit, property and doctests, book and docs builds,
 #                     notebook execution, headless-Chromium check (see tests/)
@@ -28,7 +30,7 @@ export PATH := $(CURDIR)/$(VENV)/bin:$(PATH)
 # Opt in to Jupyter's platformdirs layout now, which also silences its migration warning.
 export JUPYTER_PLATFORM_DIRS := 1
 
-.PHONY: venv book book-strict book-student docs notebooks pdf bench test test-fast lint clean
+.PHONY: venv book book-strict book-student docs notebooks nbgrader pdf bench test test-fast lint clean
 
 venv: $(STAMP)
 
@@ -68,6 +70,11 @@ notebooks: $(STAMP)
 book-student: $(STAMP)
 	$(SPHINX) -d $(DOCTREES)/student-reference -b html docs book/_build/student/html/reference
 	$(SPHINX) -d $(DOCTREES)/student -D hide_solutions=1 -b html book book/_build/student/html
+
+# The course folder for nbgrader (tools/classroom/nbgrader.py): nbgrader_config.py and
+# source/<assignment>/, made from the instructor notebooks that `make book` exports.
+nbgrader: book
+	$(PY) -m tools.classroom.nbgrader book/_build/html/classroom/instructor book/_build/nbgrader
 
 # The whole book as one PDF each for instructors (solutions open) and students (none):
 # a single-page build of each, printed by headless Chromium once MathJax is done.

@@ -1,0 +1,109 @@
+"""The nbgrader course folder (tools/classroom/nbgrader.py, `make nbgrader`), run through
+nbgrader's own commands: the expectations are nbgrader's, not ours.
+
+From this session's book build (its instructor notebooks), the course is written into a
+temporary folder with its own sqlite gradebook; then, per assignment:
+
+* ``nbgrader generate_assignment`` releases it, and the release holds no solution, no hidden
+  test and no model answer;
+* ``nbgrader autograde`` of the instructor's own notebook (the source, submitted as the
+  student "solutions") gives full marks on every autograded cell, and of the untouched
+  release (the student "blank") none.
+"""
+
+from __future__ import annotations
+
+import json
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import nbformat
+import pytest
+
+from tools.classroom import nbgrader as course
+
+pytestmark = pytest.mark.slow
+
+
+def _nbgrader(folder: Path, *args: str) -> subprocess.CompletedProcess[str]:
+    proc = subprocess.run([sys.executable, "-m", "nbgrader", *args], cwd=folder,
+                          capture_output=True, text=True, timeout=1800)
+    assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-5000:]
+    return proc
+
+
+@pytest.fixture(scope="session")
+def graded(built_book: Path, tmp_path_factory: pytest.TempPathFactory) -> dict:
+    folder = tmp_path_factory.mktemp("nbgrader")
+    points = course.write_course(built_book / "classroom" / "instructor", folder)
+    for name in points:
+        _nbgrader(folder, "generate_assignment", name, "--force")
+        for student, origin in (("solutions", "source"), ("blank", "release")):
+            target = folder / "submitted" / student / name
+            shutil.copytree(folder / origin / name, target)
+        for student in ("solutions", "blank"):
+            _nbgrader(folder, "autograde", name, "--student", student, "--create", "--force")
+    from nbgrader.api import Gradebook
+
+    scores: dict[str, dict[str, dict[str, tuple[float, float]]]] = {}
+    with Gradebook(f"sqlite:///{folder / 'gradebook.db'}", course.COURSE_ID) as gb:
+        for name in points:
+            for student in ("solutions", "blank"):
+                sub = gb.find_submission_notebook(name, name, student)
+                # The autograded cells (nbgrader also scores an untouched written answer 0).
+                scores.setdefault(name, {})[student] = {
+                    g.name: (g.score, g.max_score) for g in sub.grades
+                    if g.cell.cell_type == "code"
+                }
+    return {"folder": folder, "points": points, "scores": scores}
+
+
+def test_one_assignment_per_chapter_with_exercises(graded: dict, built_book: Path) -> None:
+    from tests.conftest import BOOK
+    from tools.classroom.labels import scan
+
+    book = scan(BOOK)
+    with_exercises = {book.files[p].removesuffix(".ipynb") for p in book.exported
+                      if ":::{exercise}" in (BOOK / f"{p}.md").read_text(encoding="utf-8")}
+    assert set(graded["points"]) == with_exercises
+    assert all(auto + manual > 0 for auto, manual in graded["points"].values())
+
+
+def test_the_release_holds_no_solution_hidden_test_or_model_answer(graded: dict) -> None:
+    folder = graded["folder"]
+    for name in graded["points"]:
+        source = nbformat.read(folder / "source" / name / f"{name}.ipynb", as_version=4)
+        text = (folder / "release" / name / f"{name}.ipynb").read_text(encoding="utf-8")
+        for marker in ("BEGIN SOLUTION", "END SOLUTION", "BEGIN HIDDEN TESTS", "_expected"):
+            assert marker not in text, (name, marker)
+        release = nbformat.read(folder / "release" / name / f"{name}.ipynb", as_version=4)
+        for cell in source.cells:
+            meta = cell.metadata.get("nbgrader", {})
+            if meta.get("solution") and cell.cell_type == "markdown":
+                # The model answer's longest line must not survive into the release.
+                longest = max(cell.source.splitlines(), key=len)
+                assert longest not in text, (name, longest[:80])
+        stubs = [c.source for c in release.cells
+                 if c.metadata.get("nbgrader", {}).get("solution")]
+        assert stubs and all("YOUR CODE HERE" in s or "YOUR ANSWER HERE" in s for s in stubs)
+        assert (folder / "release" / name / "selfcheck" / "_core.py").is_file()
+
+
+def test_autograde_gives_the_solutions_full_marks_and_the_blank_release_none(
+        graded: dict) -> None:
+    total = 0
+    for name, by_student in graded["scores"].items():
+        solutions, blank = by_student["solutions"], by_student["blank"]
+        assert solutions.keys() == blank.keys()
+        for cell, (score, most) in solutions.items():
+            assert most > 0 and score == most, (name, cell, score, most)
+            assert blank[cell][0] == 0, (name, cell, blank[cell])
+            total += 1
+    auto = sum(a for a, _ in graded["points"].values())
+    assert total > 0 and auto == sum(
+        most for s in graded["scores"].values() for _, most in s["solutions"].values())
+    print(json.dumps({"assignments": len(graded["points"]), "autograded cells": total,
+                      "autograded points": auto,
+                      "manual points": sum(m for _, m in graded["points"].values())}))
