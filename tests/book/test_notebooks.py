@@ -26,7 +26,7 @@ import nbformat
 import pytest
 
 from tests.conftest import BOOK, ROOT, SUMMARY, Build
-from tools.classroom import bundle
+from tools.classroom import bundle, selfcheck
 from tools.classroom import export as ex
 from tools.classroom.labels import scan
 
@@ -127,21 +127,84 @@ def _markdown(nb: nbformat.NotebookNode) -> str:
     return "\n".join(c.source for c in nb.cells if c.cell_type == "markdown")
 
 
+def _run(folder: Path, name: str, venv: Path) -> tuple[nbformat.NotebookNode, float]:
+    nb = nbformat.read(folder / name, as_version=4)
+    start = time.perf_counter()
+    ex.execute(nb, folder, KERNEL, 600, _kernel_dirs(venv))  # in its folder, as Jupyter
+    return nb, time.perf_counter() - start
+
+
+@pytest.fixture(scope="session")
+def executed(bundles: dict[str, Path], bundle_venv: Path) -> dict[tuple[str, str], object]:
+    """Every notebook of both editions run in the bundle's venv, two at a time (each has its
+    own kernel, a process of its own: the machine's two cores run two): (page, edition) ->
+    the executed notebook, or the exception its run raised."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    jobs = {(page, edition): (bundles[edition], BOOK_INDEX.files[page])
+            for edition in ex.EDITIONS for page in PAGES}
+    results: dict[tuple[str, str], object] = {}
+    start = time.perf_counter()
+    with ThreadPoolExecutor(max_workers=2) as pool:
+        futures = {key: pool.submit(_run, folder, name, bundle_venv)
+                   for key, (folder, name) in jobs.items()}
+        for key, future in futures.items():
+            try:
+                results[key], seconds = future.result()
+                TIMES.append(f"{key[1]} {BOOK_INDEX.files[key[0]]}: {seconds:.1f} s")
+            except Exception as err:  # reported by the test of that notebook
+                results[key] = err
+    TIMES.append(f"all {len(jobs)} notebooks, two at a time: {time.perf_counter() - start:.1f} s")
+    return results
+
+
+def _self_check_outputs(nb: nbformat.NotebookNode) -> dict[str, str]:
+    said = {}
+    for cell in nb.cells:
+        label = cell.metadata.get("classroom", {}).get("self_check")
+        if label:
+            said[label] = "".join(
+                o.get("text", "") + str(o.get("data", {}).get("text/markdown", ""))
+                for o in cell.get("outputs", []))
+    return said
+
+
 @pytest.mark.parametrize("edition", ex.EDITIONS)
 @pytest.mark.parametrize("page", PAGES)
 def test_every_notebook_of_the_bundle_runs_in_its_venv(
-    page: str, edition: str, bundles: dict[str, Path], bundle_venv: Path
+    page: str, edition: str, executed: dict, bundles: dict[str, Path]
 ) -> None:
-    folder = bundles[edition]
-    nb = nbformat.read(folder / BOOK_INDEX.files[page], as_version=4)
-    start = time.perf_counter()
-    ex.execute(nb, folder, KERNEL, 600, _kernel_dirs(bundle_venv))  # in its folder, as Jupyter
-    TIMES.append(f"{edition} {BOOK_INDEX.files[page]}: {time.perf_counter() - start:.1f} s")
+    nb = executed[page, edition]
+    if isinstance(nb, BaseException):
+        raise nb
     errors = [o for c in nb.cells if c.cell_type == "code" for o in c.get("outputs", [])
               if o.output_type == "error"]
     assert errors == []  # nbclient raises on the first error; this is the belt to it
     if page == SCREENSHOT_PAGE and edition == "student":
-        _screenshot(nb, folder)
+        _screenshot(nb, bundles[edition])
+
+
+# The pages with an exercise whose results a self-check reads.
+CHECKED_PAGES = sorted({BOOK_INDEX.targets[label].page
+                        for label, exercise in selfcheck.EXERCISES.items() if exercise.values})
+
+
+@pytest.mark.parametrize("page", CHECKED_PAGES)
+def test_self_checks_pass_the_solutions_and_answer_an_empty_cell(page: str, executed: dict) -> None:
+    # Right answers: the instructor's worked solution, checked against the self-check's
+    # independent reference (tools/classroom/selfcheck). Wrong ones: the student's answer
+    # cell as handed out, still "...", which the check must call unanswered, not right.
+    instructor, student = executed[page, "instructor"], executed[page, "student"]
+    if isinstance(instructor, BaseException) or isinstance(student, BaseException):
+        pytest.fail("the notebook did not run: see test_every_notebook_of_the_bundle_runs")
+    said = _self_check_outputs(instructor)
+    wanted = {lab for lab, e in selfcheck.EXERCISES.items()
+              if e.values and BOOK_INDEX.targets[lab].page == page}
+    assert wanted and set(said) == wanted, (page, sorted(wanted ^ set(said)))
+    for label, text in said.items():
+        assert "\u2718" not in text and "All right." in text, (label, text)
+    for label, text in _self_check_outputs(student).items():
+        assert "\u2714" not in text and "is still `...`" in text, (label, text)
 
 
 # One student notebook, as it ran from its bundle, pictured as JupyterLab renders it
@@ -175,7 +238,7 @@ def test_each_zip_holds_the_notebooks_the_wheel_and_how_to_install(
     for edition, folder in bundles.items():
         names = sorted(p.name for p in folder.iterdir())
         expected = [*BOOK_INDEX.files.values(), bundle.README, bundle.REQUIREMENTS,
-                    bundle.wheel_name()]
+                    bundle.wheel_name(), bundle.SELFCHECK]
         assert names == sorted(expected), edition
         readme = (folder / bundle.README).read_text(encoding="utf-8")
         # The JupyterHub's commands are the laptop's, with --user, and as a %pip cell.
@@ -283,11 +346,18 @@ def test_student_has_answer_cells_and_no_solutions(tmp_path: Path) -> None:
         assert re.search(r"^#+ Solution|Solution to Exercise", s_text, re.M) is None
         s_code = [c.source for c in s if c.cell_type == "code" and c.source]
         t_code = [c.source for c in t if c.cell_type == "code"]
-        assert set(s_code) <= set(t_code)
+        # Beyond the instructor's code, only the answer cells: "name = ..." for each result
+        # the self-check reads, nothing of a solution.
+        for extra in set(s_code) - set(t_code):
+            for line in extra.splitlines():
+                assert re.fullmatch(r"\w+ = \.\.\.  # replace \.\.\. by your result", line), line
         s_ex = [i for i, c in enumerate(s) if c.cell_type == "markdown" and
                 re.search(r"^### Exercise \d+", c.source, re.M)]
-        for i in s_ex:  # an empty code cell right after each exercise
-            assert s[i + 1].cell_type == "code" and s[i + 1].source == "", student.name
+        for i in s_ex:  # the student's cells right after each exercise: results, or a hint
+            after = s[i + 1]
+            assert (after.cell_type == "code" and after.source == "") or (
+                after.source.startswith(("**Your results.**", "<details><summary><b>Hint"))
+            ), (student.name, after.source[:80])
         t_ex = [re.findall(r"^### Exercise (\d+)", c.source, re.M) for c in t]
         s_numbers = [re.findall(r"^### Exercise (\d+)", c.source, re.M) for c in s]
         assert sum(t_ex, []) == sum(s_numbers, []), student.name

@@ -154,7 +154,7 @@ def answer_cells(label: str, ctx: Context) -> list[nbformat.NotebookNode]:
             "the self-check under it: it says whether each result is right and, if not, "
             "what to look at."))
         cells.append(nbformat.v4.new_code_cell(
-            "\n".join(f"{v.name} = ...  # your {v.name}" for v in exercise.values)))
+            "\n".join(f"{v.name} = ...  # replace ... by your result" for v in exercise.values)))
         cells.extend(self_check_cells(label, "student"))
     if exercise.written is not None:
         hint = convert_markdown(exercise.written, ctx).strip()
@@ -165,6 +165,8 @@ def answer_cells(label: str, ctx: Context) -> list[nbformat.NotebookNode]:
             "**Your answer** to the parts to prove or explain (double-click to write here).")
         cell.metadata["classroom"] = {"written": label}
         cells.append(cell)
+    if not exercise.values:  # for the computations a proof exercise may ask for too
+        cells.append(nbformat.v4.new_code_cell(""))
     return cells
 
 
