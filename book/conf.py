@@ -45,6 +45,10 @@ myst_heading_anchors = 3
 # "cache" keeps `make book` fast; the cache keys only on cell source, so `make book-strict`
 # and the tests override it with -D nb_execution_mode=force.
 nb_execution_mode = "cache"
+# One cache for every build of the book: the site, the student site (which executes the
+# pages whole and removes the solutions afterwards, book/_ext/classroom.py) and the PDFs'
+# single-page builds run each notebook once between them, and show the same numbers.
+nb_execution_cache_path = str(_HERE / "_build" / ".jupyter_cache")
 nb_execution_raise_on_error = True
 nb_execution_show_tb = True
 # Per cell, seconds: the slowest cells (mpmath references, solve_ivp comparisons) take a few s.

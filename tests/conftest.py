@@ -109,13 +109,26 @@ def site_folder(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 
 @pytest.fixture(scope="session")
-def book_build(site_folder: Path, docs_build: Build) -> Build:
-    """The book built from clean with forced execution (what CI checks).
+def execution_cache(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """myst-nb's execution cache of this session, empty at its start: the book build fills
+    it, so every page runs once, from clean; the student site, the PDFs' single-page builds
+    and the notebooks' glue read it, as `make book`, `make book-student` and `make pdf`
+    share book/_build/.jupyter_cache."""
+    return tmp_path_factory.mktemp("jupyter-cache")
+
+
+@pytest.fixture(scope="session")
+def book_build(site_folder: Path, docs_build: Build, execution_cache: Path) -> Build:
+    """The book built from clean, every page executed (what CI checks): the session's cache
+    is empty when it starts, so "cache" mode runs every notebook, and keeps the results.
 
     It links to the API entries of this session's docs build, in its own ``reference/``
     folder (book/conf.py reads the objects.inv there), so the docs are built once, first.
     """
-    return book_site_build(site_folder, "-D", "nb_execution_mode=force")
+    return book_site_build(
+        site_folder, "-D", "nb_execution_mode=cache",
+        "-D", f"nb_execution_cache_path={execution_cache}",
+    )
 
 
 @pytest.fixture(scope="session")
@@ -125,16 +138,19 @@ def docs_build(site_folder: Path) -> Build:
 
 
 @pytest.fixture(scope="session")
-def student_book(tmp_path_factory: pytest.TempPathFactory) -> Build:
+def student_book(
+    tmp_path_factory: pytest.TempPathFactory, book_build: Build, execution_cache: Path
+) -> Build:
     """The student site as `make book-student` builds it: its own reference first, in
-    ``html/reference``, then the book without solutions around it."""
-    cache = tmp_path_factory.getbasetemp() / "jupyter-cache"  # shared with test_pdf
+    ``html/reference``, then the book without solutions around it, from the cache the book
+    build filled (the student pages execute whole; book/_ext/classroom.py removes the
+    solutions after)."""
     site = tmp_path_factory.mktemp("student")
     reference = reference_build(site)
     if reference.returncode != 0:
         pytest.fail("the student site's reference did not build:\n" + reference.output[-3000:])
     return book_site_build(
-        site, "-D", "hide_solutions=1", "-D", f"nb_execution_cache_path={cache}"
+        site, "-D", "hide_solutions=1", "-D", f"nb_execution_cache_path={execution_cache}"
     )
 
 

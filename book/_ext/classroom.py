@@ -11,22 +11,33 @@
   build) the instructor notebook and zip too, as relative links into the build: they work
   offline. Every page knows its edition (``classroom_edition``: the footer says that the
   instructor site, which holds the solutions, is for the teacher to keep private).
-- ``-D hide_solutions=1`` (the student book, ``make book-student``): sphinx-exercise's own
-  option crashes the HTML writer (``departing unknown node type: solution_end_node``) and
-  would leave a gated solution's text and cells in the page. The solutions are removed from
-  the page source at ``source-read`` instead (before myst-nb parses and executes it), the
-  page sources that Sphinx copies to ``_sources/`` (the download menu's ``.md``) are the
-  same stripped text, and only the student edition is exported: no file of the student
-  site holds a solution (tests/book/test_site.py searches them all).
+- ``-D hide_solutions=1`` (the student book, ``make book-student``; also
+  ``-D classroom_edition=student``): sphinx-exercise's own option crashes the HTML writer
+  (``departing unknown node type: solution_end_node``) and would leave a gated solution's text
+  and cells in the page, so this extension takes the option over at ``config-inited``. The
+  page is read and executed whole, exactly as in the instructor site, so both sites (and the
+  PDFs) share one execution cache and each notebook runs once; the solutions are removed from
+  the doctree at ``doctree-read`` (sphinx-exercise has merged each gated solution into one
+  node by then), before anything is indexed or written. The page sources that Sphinx copies
+  to ``_sources/`` (the download menu's ``.md``) are replaced by the stripped text, and only
+  the student edition is exported: no file of the student site holds a solution
+  (tests/book/test_site.py searches them all). The pages for the teacher alone
+  (``INSTRUCTOR_ONLY``: the teacher's guide) are left out of the student site, with their
+  toctree entries.
 """
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 from typing import Any
 
+from docutils import nodes
 from sphinx.application import Sphinx
+from sphinx.config import Config
+from sphinx.errors import ConfigError
 from sphinx.util import logging
+from sphinx_exercise.nodes import solution_node
 
 from tools.classroom import bundle
 from tools.classroom import export as export_notebooks
@@ -34,17 +45,54 @@ from tools.classroom.labels import scan
 from tools.classroom.markdown import strip_solutions
 
 logger = logging.getLogger(__name__)
+# Pages for the teacher only: left out of the student site, their toctree entries with them.
+INSTRUCTOR_ONLY = ("teachers_guide",)
+_ENTRY = re.compile(r"^[ \t]*(" + "|".join(INSTRUCTOR_ONLY) + r")(\.md)?[ \t]*\n", re.M)
 FOLDER = "classroom"
 ZIP_NAME = bundle.ZIP_NAME
 
 
+def _student(app: Sphinx) -> bool:
+    return bool(app.config.classroom_edition == "student")
+
+
 def _editions(app: Sphinx) -> tuple[str, ...]:
-    return ("student",) if app.config.hide_solutions else export_notebooks.EDITIONS
+    return ("student",) if _student(app) else export_notebooks.EDITIONS
 
 
-def _strip(app: Sphinx, docname: str, source: list[str]) -> None:
-    if app.config.hide_solutions:
-        source[0] = strip_solutions(source[0])
+def _take_over_hide_solutions(app: Sphinx, config: Config) -> None:
+    # sphinx-exercise must never see its own switch on (see the module docstring).
+    if config.hide_solutions:
+        config.classroom_edition = "student"
+        config.hide_solutions = False
+    if config.classroom_edition == "student":
+        config.exclude_patterns = [*config.exclude_patterns,
+                                   *(f"{page}.md" for page in INSTRUCTOR_ONLY)]
+    if config.classroom_edition not in ("instructor", "student"):
+        raise ConfigError(
+            f"classroom_edition must be 'instructor' or 'student', not {config.classroom_edition!r}"
+        )
+
+
+def student_text(text: str) -> str:
+    """Return a page's source as the student site has it.
+
+    No solution, and no instructor-only page in its toctrees.
+    """
+    return _ENTRY.sub("", strip_solutions(text))
+
+
+def _drop_instructor_pages(app: Sphinx, docname: str, source: list[str]) -> None:
+    if _student(app):
+        source[0] = _ENTRY.sub("", source[0])
+
+
+def _remove_solutions(app: Sphinx, doctree: nodes.document) -> None:
+    # Before sphinx-exercise's own doctree-read (priority 500) registers the solutions'
+    # labels, so nothing in the student site can refer to one.
+    if _student(app):
+        for node in list(doctree.findall(solution_node)):
+            node.parent.remove(node)
 
 
 def _download_buttons(
@@ -92,7 +140,7 @@ def _download_buttons(
 def _edition(
     app: Sphinx, pagename: str, templatename: str, context: dict[str, Any], doctree: Any
 ) -> None:
-    context["classroom_edition"] = "student" if app.config.hide_solutions else "instructor"
+    context["classroom_edition"] = app.config.classroom_edition
 
 
 def _stripped_sources(app: Sphinx) -> None:
@@ -103,7 +151,7 @@ def _stripped_sources(app: Sphinx) -> None:
         source = Path(app.env.doc2path(docname))
         for copy in sources.glob(f"{docname}.*"):
             if copy.name.startswith(source.name):
-                text = strip_solutions(source.read_text(encoding="utf-8"))
+                text = student_text(source.read_text(encoding="utf-8"))
                 copy.write_text(text, encoding="utf-8")
 
 
@@ -115,7 +163,7 @@ def _scan(app: Sphinx, env: Any, docnames: list[str]) -> None:
 def _export(app: Sphinx, exception: BaseException | None) -> None:
     if exception is not None or app.builder.name != "html":
         return
-    if app.config.hide_solutions:
+    if _student(app):
         _stripped_sources(app)
     out = Path(app.outdir) / FOLDER
     editions = _editions(app)
@@ -158,7 +206,10 @@ def setup(app: Sphinx) -> dict[str, Any]:
     app.connect("builder-inited", _builder_inited)
     # Printing (Chromium's PDF or a reader's Ctrl-P): no navigation, outputs wrapped.
     app.add_css_file("classroom_print.css", media="print")
-    app.connect("source-read", _strip)
+    app.add_config_value("classroom_edition", "instructor", "env", types=[str])
+    app.connect("config-inited", _take_over_hide_solutions)
+    app.connect("source-read", _drop_instructor_pages)
+    app.connect("doctree-read", _remove_solutions, priority=400)
     app.connect("env-before-read-docs", _scan)
     # After sphinx-book-theme builds its header buttons (priority 501).
     app.connect("html-page-context", _download_buttons, priority=510)

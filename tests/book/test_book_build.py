@@ -20,7 +20,7 @@ pytestmark = pytest.mark.slow
 
 
 def test_book_builds_without_warnings(book_build: Build) -> None:
-    print(f"\nbook build (from clean, forced execution): {book_build.seconds:.1f} s")
+    print(f"\nbook build (from clean, every page executed): {book_build.seconds:.1f} s")
     assert book_build.returncode == 0, book_build.output[-8000:]
     assert book_build.warnings == [], "\n".join(book_build.warnings)
 

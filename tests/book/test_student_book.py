@@ -3,7 +3,8 @@ inside the HTML build (book/_ext/classroom.py).
 
 sphinx-exercise's own hide_solutions crashes the HTML writer on a gated solution
 (``departing unknown node type: solution_end_node``) and would leave the solution's text and
-cells in the page; the extension removes the solutions from the page sources instead.
+cells in the page; the extension takes the option over, executes each page whole (the cache
+of the instructor site's build serves) and removes the solutions from the doctree.
 """
 
 from __future__ import annotations
@@ -81,6 +82,20 @@ def test_student_book_has_exercises_and_no_solutions(student_book: Build) -> Non
 
 
 @pytest.mark.slow
+def test_the_teachers_guide_is_in_the_instructor_site_only(
+        student_book: Build, built_book: Path) -> None:
+    # book/_ext/classroom.py: INSTRUCTOR_ONLY pages and their toctree entries are left out.
+    assert (built_book / "teachers_guide.html").is_file()
+    assert 'href="teachers_guide.html"' in (built_book / "index.html").read_text(encoding="utf-8")
+    site = student_book.outdir
+    assert not (site / "teachers_guide.html").exists()
+    assert not list(site.rglob("teachers_guide*"))
+    mentions = [p.name for p in site.rglob("*") if p.is_file() and p.suffix in {".html", ".js",
+                ".txt", ".md"} and "teachers_guide" in p.read_text(encoding="utf-8")]
+    assert mentions == []
+
+
+@pytest.mark.slow
 def test_book_offers_each_chapter_notebook(built_book: Path) -> None:
     index = scan(BOOK)
     for page in index.exported:
@@ -98,7 +113,9 @@ def test_book_offers_each_chapter_notebook(built_book: Path) -> None:
         with zipfile.ZipFile(archive) as z:
             names = sorted(z.namelist())
         # One folder: the notebooks and what installs them (tools/classroom/bundle.py).
-        files = [*index.files.values(), bundle.README, bundle.REQUIREMENTS, bundle.wheel_name()]
+        files = [*index.files.values(), bundle.README, bundle.REQUIREMENTS, bundle.wheel_name(),
+                 *(p.relative_to(bundle.SELFCHECK_SOURCE.parent).as_posix()
+                   for p in sorted(bundle.SELFCHECK_SOURCE.rglob("*.py")))]
         assert names == sorted(f"{bundle.bundle_name(edition)}/{f}" for f in files), edition
 
 
