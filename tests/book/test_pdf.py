@@ -10,6 +10,7 @@ import importlib.util
 import os
 import re
 import shutil
+from pathlib import Path
 
 import pytest
 
@@ -29,15 +30,15 @@ def _need(what: str, ok: bool) -> None:
 
 
 @pytest.fixture(scope="session")
-def pdfs(tmp_path_factory: pytest.TempPathFactory, docs_build: Build) -> dict:
+def pdfs(tmp_path_factory: pytest.TempPathFactory, docs_build: Build, book_build: Build,
+         execution_cache: Path) -> dict:
     _need("chromium", shutil.which("chromium") is not None or "CHROMIUM" in os.environ)
     _need("pypdf", importlib.util.find_spec("pypdf") is not None)
     if docs_build.returncode != 0:
         pytest.fail("the docs did not build (the book links to them)", pytrace=False)
     out = tmp_path_factory.mktemp("pdf")
-    # One execution cache for the session: test_student_book builds the same student pages.
-    cache = tmp_path_factory.getbasetemp() / "jupyter-cache"
-    report = build_pdf.build(BOOK, out, cache,
+    # The session's execution cache, which the book build filled: no page runs again.
+    report = build_pdf.build(BOOK, out, execution_cache,
                              {"ELLIPTIC_PENDULUM_DOCS_HTML": str(docs_build.outdir)})
     print({k: {n: round(v, 1) if isinstance(v, float) else v for n, v in r.items()}
            for k, r in report.items()})
