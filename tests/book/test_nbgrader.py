@@ -14,6 +14,7 @@ temporary folder with its own sqlite gradebook; then, per assignment:
 from __future__ import annotations
 
 import json
+import os
 import shutil
 import subprocess
 import sys
@@ -28,7 +29,11 @@ pytestmark = pytest.mark.slow
 
 
 def _nbgrader(folder: Path, *args: str) -> subprocess.CompletedProcess[str]:
-    proc = subprocess.run([sys.executable, "-m", "nbgrader", *args], cwd=folder,
+    # nbgrader runs the `alembic` script of its environment to create the gradebook, and
+    # the notebooks' kernel is this interpreter's: its bin folder first on the PATH.
+    env = dict(os.environ, PATH=str(Path(sys.executable).parent) + os.pathsep
+               + os.environ.get("PATH", ""))
+    proc = subprocess.run([sys.executable, "-m", "nbgrader", *args], cwd=folder, env=env,
                           capture_output=True, text=True, timeout=1800)
     assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-5000:]
     return proc
