@@ -24,6 +24,8 @@
   (tests/book/test_site.py searches them all). The pages for the teacher alone
   (``INSTRUCTOR_ONLY``: the teacher's guide) are left out of the student site, with their
   toctree entries.
+- ``source-read``, both sites: under each exercise, a folded hint (tools/classroom/selfcheck:
+  the hint for the parts to prove, and the results the chapter's notebook checks).
 """
 
 from __future__ import annotations
@@ -39,7 +41,7 @@ from sphinx.errors import ConfigError
 from sphinx.util import logging
 from sphinx_exercise.nodes import solution_node
 
-from tools.classroom import bundle
+from tools.classroom import bundle, selfcheck
 from tools.classroom import export as export_notebooks
 from tools.classroom.labels import scan
 from tools.classroom.markdown import strip_solutions
@@ -85,6 +87,37 @@ def student_text(text: str) -> str:
 def _drop_instructor_pages(app: Sphinx, docname: str, source: list[str]) -> None:
     if _student(app):
         source[0] = _ENTRY.sub("", source[0])
+
+
+_EXERCISE = re.compile(
+    r"^(?P<fence>:{3,})\{exercise\}[^\n]*\n:label: (?P<label>\S+)\n.*?^(?P=fence)[ \t]*\n",
+    re.M | re.S)
+
+
+def hint_block(label: str) -> str:
+    """Return the folded hint under an exercise, in both sites.
+
+    The hint of its self-check for the parts to prove, and which results the chapter's
+    notebook checks.
+    """
+    exercise = selfcheck.EXERCISES.get(label)
+    if exercise is None:
+        return ""
+    lines = []
+    if exercise.written is not None:
+        lines.append(exercise.written)
+    if exercise.values:
+        names = ", ".join(f"`{v.name}`" for v in exercise.values)
+        lines.append(f"In this chapter's notebook, the cell under the exercise checks your "
+                     f"results ({names}) and says what to look at if one is not right yet.")
+    body = "\n\n".join(lines)
+    return f"\n::::{{admonition}} Hint\n:class: dropdown hint\n\n{body}\n::::\n"
+
+
+def _hints(app: Sphinx, docname: str, source: list[str]) -> None:
+    # In the page text only (jupyter-cache keys on code cells: nothing runs again); the
+    # notebooks get the same hint from the exporter, as a cell.
+    source[0] = _EXERCISE.sub(lambda m: m[0] + hint_block(m["label"]), source[0])
 
 
 def _remove_solutions(app: Sphinx, doctree: nodes.document) -> None:
@@ -209,6 +242,7 @@ def setup(app: Sphinx) -> dict[str, Any]:
     app.add_config_value("classroom_edition", "instructor", "env", types=[str])
     app.connect("config-inited", _take_over_hide_solutions)
     app.connect("source-read", _drop_instructor_pages)
+    app.connect("source-read", _hints)
     app.connect("doctree-read", _remove_solutions, priority=400)
     app.connect("env-before-read-docs", _scan)
     # After sphinx-book-theme builds its header buttons (priority 501).

@@ -82,6 +82,26 @@ def test_student_book_has_exercises_and_no_solutions(student_book: Build) -> Non
 
 
 @pytest.mark.slow
+def test_every_exercise_has_its_folded_hint_in_both_sites(
+        student_book: Build, built_book: Path) -> None:
+    # book/_ext/classroom.py adds a dropdown "Hint" under each exercise, from its self-check
+    # (tools/classroom/selfcheck): as many per page as the page has exercises.
+    from tools.classroom import selfcheck
+
+    index = scan(BOOK)
+    for site in (student_book.outdir, built_book):
+        for page in index.pages:
+            html = (site / f"{page}.html").read_text(encoding="utf-8")
+            exercises = len(EXERCISE.findall(html))
+            assert html.count('<p class="admonition-title">Hint</p>') == exercises, page
+            for label, exercise in selfcheck.EXERCISES.items():
+                if label in html and exercise.values:
+                    names = ", ".join(f"{v.name}" for v in exercise.values)
+                    text = re.sub(r"<[^>]+>", "", html)
+                    assert f"checks your results ({names})" in text, (page, label)
+
+
+@pytest.mark.slow
 def test_the_teachers_guide_is_in_the_instructor_site_only(
         student_book: Build, built_book: Path) -> None:
     # book/_ext/classroom.py: INSTRUCTOR_ONLY pages and their toctree entries are left out.
