@@ -25,6 +25,8 @@ Usage (``make nbgrader``)::
 from __future__ import annotations
 
 import argparse
+import ast
+import builtins
 import inspect
 import re
 import shutil
@@ -64,8 +66,12 @@ def hidden_tests(label: str) -> str:
     exercise = selfcheck.EXERCISES[label]
     assert exercise.reference is not None
     source = textwrap.dedent(inspect.getsource(exercise.reference))
-    lines = ["import math", "", source.rstrip(), "",
-             f"_expected = {exercise.reference.__name__}()"]
+    # Inside a function of its own, so that the reference's name cannot hide a result of
+    # the same name (a reference "half" for the result "half").
+    lines = ["import math", "", "", "def _reference():",
+             textwrap.indent(source.rstrip(), "    "), "",
+             f"    return {exercise.reference.__name__}()", "", "",
+             "_expected = _reference()"]
     for v in exercise.values:
         if v.kind is float:
             lines.append(
@@ -114,20 +120,65 @@ def _exercise_cells(label: str, solution: list[nbformat.NotebookNode]) -> tuple[
     return cells, auto, manual
 
 
+def _names(source: str) -> tuple[set[str], set[str]]:
+    """(names a cell defines, names it reads and does not define); a cell that is not plain
+    Python (a magic) defines and reads nothing."""
+    try:
+        tree = ast.parse(source)
+    except SyntaxError:
+        return set(), set()
+    stored, loaded = set(), set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Name):
+            (stored if isinstance(node.ctx, (ast.Store, ast.Del)) else loaded).add(node.id)
+        elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+            stored.add(node.name)
+        elif isinstance(node, ast.arg):
+            stored.add(node.arg)
+        elif isinstance(node, (ast.Import, ast.ImportFrom)):
+            stored |= {(a.asname or a.name).split(".")[0] for a in node.names}
+    return stored, loaded - stored - set(dir(builtins))
+
+
 def exercises_only(cells: list[nbformat.NotebookNode]) -> list[nbformat.NotebookNode]:
     """The chapter's first cell (what it is), its first code cell (the imports every later
-    cell needs) and its "Exercises" section: an assignment is the exercises; the chapter
-    itself is read in the book (and runs, whole, in the classroom notebooks)."""
+    cell needs), the earlier code cells that the exercises' solutions build on (a name they
+    read and do not define, found by its last definition, and what that cell reads in
+    turn), and its "Exercises" section: an assignment is the exercises; the chapter itself
+    is read in the book (and runs, whole, in the classroom notebooks)."""
     heading = re.compile(r"^## Exercises\s*$", re.M)
     start = next((k for k, c in enumerate(cells)
                   if c.cell_type == "markdown" and heading.search(c.source)), None)
     if start is None:
         raise ValueError("the notebook has solutions but no '## Exercises' section")
-    setup = next(c for c in cells if c.cell_type == "code")
+    code = [k for k, c in enumerate(cells[:start]) if c.cell_type == "code"]
+    setup = code[0]
+    wanted: set[str] = set()
+    defined = set(_names(cells[setup].source)[0])
+    for c in cells[start:]:
+        if c.cell_type == "code":
+            stores, loads = _names(c.source)
+            wanted |= loads
+            defined |= stores
+    wanted -= defined
+    needed: list[int] = []
+    for k in reversed(code[1:]):
+        stores, loads = _names(cells[k].source)
+        if stores & wanted:
+            needed.insert(0, k)
+            wanted = (wanted - stores) | (loads - defined)
     first = nbformat.v4.new_markdown_cell(
         cells[start].source[heading.search(cells[start].source).start():])
     first.metadata = cells[start].metadata
-    return [cells[0], setup, first, *cells[start + 1:]]
+    kept = [cells[0], cells[setup]]
+    if needed:
+        kept.append(nbformat.v4.new_markdown_cell(
+            "The chapter's cells that the exercises build on (run them first):"))
+        for k in needed:
+            cell = cells[k]
+            cell.metadata.setdefault("jupyter", {})["source_hidden"] = True
+            kept.append(cell)
+    return [*kept, first, *cells[start + 1:]]
 
 
 def assignment(instructor: nbformat.NotebookNode, name: str) -> tuple[nbformat.NotebookNode,
