@@ -95,3 +95,19 @@ def test_bad_use_is_a_clear_error() -> None:
     label = next(lab for lab, ex in selfcheck.EXERCISES.items() if ex.values)
     with pytest.raises(TypeError, match="has no answer named"):
         selfcheck.check(label, no_such_name=1.0)
+
+
+def test_the_package_shares_no_line_with_a_worked_solution() -> None:
+    # It ships in the student bundle: the snippets by which tests/book/test_site.py finds a
+    # solution in a file (its code lines and prose) must not be in it.
+    from pathlib import Path
+
+    from tests.book.test_site import _squash, solution_snippets
+    from tools.classroom import bundle
+
+    text = _squash("\n".join(p.read_text(encoding="utf-8")
+                             for p in sorted(Path(bundle.SELFCHECK_SOURCE).rglob("*.py"))))
+    text += _squash("\n".join(e.written or "" for e in selfcheck.EXERCISES.values()))
+    leaks = {s: sorted(p for p in pieces if p in text)
+             for s, pieces in solution_snippets().items()}
+    assert {s: p for s, p in leaks.items() if p} == {}

@@ -19,11 +19,14 @@ def loop() -> dict[str, float]:
     def top(t, y):
         return y[0] - math.pi
 
+    def rhs(t, y):
+        return [y[1], -math.sin(y[0])]
+
     top.terminal = True
     v = math.sqrt(5)
-    run = solve_ivp(lambda t, y: (y[1], -math.sin(y[0])), (0.0, 20.0), (0.0, v),
-                    method="DOP853", rtol=1e-12, atol=1e-12, events=top)
-    return {"v_loop": v, "top_speed": float(run.y_events[0][0][1])}
+    sol = solve_ivp(rhs, [0.0, 30.0], [0.0, v], method="DOP853", rtol=3e-13, atol=3e-13,
+                    events=top)
+    return {"v_loop": v, "top_speed": float(sol.y_events[0][0][1])}
 
 
 def six() -> dict[str, float]:
@@ -40,13 +43,17 @@ def six() -> dict[str, float]:
     def top(t, y):
         return y[0] - math.pi
 
+    def rhs(t, y):
+        return [y[1], -w2 * math.sin(y[0])]
+
     top.terminal = True
     gaps = []
-    for kick in (2.3, 3.0, 5.0):
+    kicks = [2.3, 3.0, 5.0]
+    for kick in kicks:
         v = kick * math.sqrt(w2)
-        run = solve_ivp(lambda t, y: (y[1], -w2 * math.sin(y[0])), (0.0, 20.0), (0.0, v),
-                        method="DOP853", rtol=1e-12, atol=1e-12, events=top)
-        th, w = run.y_events[0][0]
+        sol = solve_ivp(rhs, [0.0, 30.0], [0.0, v], method="DOP853", rtol=3e-13, atol=3e-13,
+                        events=top)
+        th, w = sol.y_events[0][0]
         bottom = length * v**2 + g
         gaps.append((bottom - (length * w**2 + g * math.cos(th))) / g)
     return {"gap_max": float(max(gaps))}
