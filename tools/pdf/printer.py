@@ -228,7 +228,8 @@ FOOTER = ('<div style="font-size:8px;width:100%;text-align:center">'
 KEEP = """
 (height => {
   let kept = 0;
-  const boxes = ".admonition, .proof, div.cell, .exercise, table, div.highlight";
+  // A cell's input box too, not only the code block in it: else its frame stays behind.
+  const boxes = ".admonition, .proof, div.cell, .cell_input, .exercise, table, div.highlight";
   for (const el of document.querySelectorAll(boxes)) {
     if (el.getBoundingClientRect().height < height) { el.classList.add("ep-keep"); kept++; }
   }
