@@ -77,10 +77,14 @@ nbgrader: book
 	$(PY) -m tools.classroom.nbgrader book/_build/html/classroom/instructor book/_build/nbgrader
 
 # The whole book as one PDF each for instructors (solutions open) and students (none):
-# a single-page build of each, printed by headless Chromium once MathJax is done.
-# Its links to the reference go to docs/_build/html.
-pdf: docs
-	ELLIPTIC_PENDULUM_DOCS_HTML=$(CURDIR)/docs/_build/html $(PY) -m tools.pdf book book/_build
+# a single-page build of each, printed by headless Chromium once MathJax is done
+# (tools/pdf). The builds reuse the HTML book's execution cache, so a cell runs again only
+# if its source changed (the student pages, stripped of their solutions, have cells of
+# their own: they run once, then they are cached too), and resolve the library's names in
+# the book's reference; a PDF cannot link to files beside it, so those names print as text.
+pdf: book
+	ELLIPTIC_PENDULUM_DOCS_HTML=$(CURDIR)/book/_build/html/reference $(PY) -m tools.pdf \
+	  book book/_build --execution-cache $(CURDIR)/book/_build/.jupyter_cache
 
 bench: $(STAMP)
 	$(PY) benchmarks/bench_theta.py

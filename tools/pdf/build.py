@@ -15,6 +15,8 @@ Usage::
 from __future__ import annotations
 
 import argparse
+import datetime
+import importlib.metadata
 import os
 import subprocess
 import sys
@@ -24,6 +26,30 @@ from pathlib import Path
 from .printer import print_pdf
 
 EDITIONS = {"book": (".", [], True), "book-student": ("student", ["-D", "hide_solutions=1"], False)}
+# The title page says which edition, which version of the library the book was built with
+# (its numbers come from that run), when, and the licences (book/about.md,
+# book/_templates/licence.html).
+EDITION_NAMES = {"book": "Instructor edition, with the solutions",
+                 "book-student": "Student edition"}
+LICENCE = "Text and figures: CC BY 4.0; code: MIT"
+
+
+def title_page(name: str, today: datetime.date | None = None) -> list[tuple[str, str]]:
+    """The lines under the title on the PDF's first page, (CSS class, text).
+
+    The date is today's, or SOURCE_DATE_EPOCH's (reproducible builds) if it is set."""
+    if today is None:
+        epoch = os.environ.get("SOURCE_DATE_EPOCH")
+        today = (datetime.datetime.fromtimestamp(int(epoch), datetime.UTC).date() if epoch
+                 else datetime.date.today())
+    try:
+        version = importlib.metadata.version("elliptic-pendulum")
+    except importlib.metadata.PackageNotFoundError:
+        version = "unknown"
+    return [("ep-edition", EDITION_NAMES[name]),
+            ("ep-version", f"elliptic-pendulum {version}"),
+            ("ep-date", today.isoformat()),
+            ("ep-licence", f"\u00a9 2024-2026 elliptic-pendulum contributors. {LICENCE}.")]
 
 
 def build(book: Path, build_dir: Path, cache: Path | None = None,
@@ -47,7 +73,8 @@ def build(book: Path, build_dir: Path, cache: Path | None = None,
         )
         built = time.perf_counter() - start
         start = time.perf_counter()
-        seen = print_pdf(out / "index.html", build_dir / "pdf" / f"{name}.pdf", solutions)
+        seen = print_pdf(out / "index.html", build_dir / "pdf" / f"{name}.pdf", solutions,
+                         title_page=title_page(name))
         report[name] = {"build s": built, "print s": time.perf_counter() - start, **seen}
     return report
 
