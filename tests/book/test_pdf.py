@@ -118,6 +118,23 @@ def test_solutions_open_for_instructors_absent_for_students(pdfs: dict) -> None:
         assert f"Exercise {number}" in student
 
 
+def test_every_exercise_prints_its_hint_open(pdfs: dict) -> None:
+    # One hint per exercise (book/_ext/classroom.py), opened by the printer in both editions;
+    # the text of the first written hint of the registry is on paper.
+    from tools.classroom import selfcheck
+
+    exercises = len(scan(BOOK).exercise_numbers)
+    # The longest stretch of a hint without math or roles: plain text on paper too.
+    plain = max((re.split(r"[${`*]", e.written)[0] for e in selfcheck.EXERCISES.values()
+                 if e.written), key=len)
+    words = " ".join(plain.split()[:6])
+    assert len(words.split()) >= 4, words
+    for name in ("book", "book-student"):
+        assert pdfs["report"][name]["hints"] == exercises, name
+        text = re.sub(r"\s+", " ", " ".join(pdfs["texts"][name]))
+        assert words in text, (name, words)
+
+
 # --- Fit to print and to navigate -----------------------------------------------------------
 # The chapters, as the book's toctree lists them: every one starts on a new page, has an
 # entry in the outline and a line with its page in the contents.

@@ -62,6 +62,13 @@ document.querySelectorAll("details.dropdown, .solution details:not(.hide)")
   .forEach(d => { d.open = true; });
 document.querySelectorAll(".solution").length
 """
+# The exercises' hints (book/_ext/classroom.py: a folded "Hint" admonition) print open in
+# both editions: on paper a folded box would be a title over nothing.
+OPEN_HINTS = """
+document.querySelectorAll(".hint .toggle-hidden, .hint.toggle-hidden")
+  .forEach(e => e.classList.remove("toggle-hidden"));
+document.querySelectorAll(".hint").length
+"""
 # Paper shows no screen controls and links only what a reader of the PDF can open. Called
 # with the title page's lines; returns what it changed (the caller's log, and the tests).
 # - Folded code cells: on paper the code stays hidden and the outputs are shown (the
@@ -330,6 +337,7 @@ def print_pdf(page: Path, pdf: Path, open_solutions: bool = False, timeout: floa
             if math and not formulas:  # e.g. MathJax from a CDN, and no network
                 raise RuntimeError(f"{page} has {math} formulas but MathJax typeset none")
             solutions = tools.evaluate(OPEN_SOLUTIONS) if open_solutions else 0
+            hints = tools.evaluate(OPEN_HINTS)
             prepared = tools.evaluate(f"{PREPARE}({json.dumps(title_page or [])})")
             images = tools.evaluate("document.images.length")
             fitted = tools.evaluate(FIT)
@@ -370,8 +378,8 @@ def print_pdf(page: Path, pdf: Path, open_solutions: bool = False, timeout: floa
         raise RuntimeError(f"{page}: entries of the contents with no page: {missing[:5]}")
     pdf.parent.mkdir(parents=True, exist_ok=True)
     pdf.write_bytes(data)
-    return {"formulas": formulas, "solutions": solutions, "images": images, "fitted": fitted,
-            "kept": kept, "passes": passes, "contents": len(pages), **prepared}
+    return {"formulas": formulas, "solutions": solutions, "hints": hints, "images": images,
+            "fitted": fitted, "kept": kept, "passes": passes, "contents": len(pages), **prepared}
 
 
 def destination_pages(data: bytes, names: list[str]) -> dict[str, int]:
