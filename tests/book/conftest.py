@@ -6,19 +6,31 @@ test`` runs them), whatever its own marks: the folder is the tier.
 
 from __future__ import annotations
 
+import hashlib
 import os
 import shutil
+import subprocess
 from pathlib import Path
+from typing import NoReturn
 
 import pytest
 
 _HERE = Path(__file__).resolve().parent
+ROOT = _HERE.parents[1]
 
 
 def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
     for item in items:
         if _HERE in Path(str(item.path)).resolve().parents:
             item.add_marker(pytest.mark.slow)
+
+
+def unavailable(message: str, remedy: str) -> NoReturn:
+    """Skip a test that lacks a tool of the machine, except under CI=true, where it fails:
+    .ci/run installs the tool, so a CI run that misses it is broken, not incomplete."""
+    if os.environ.get("CI", "").lower() == "true":
+        pytest.fail(f"{message}; {remedy}", pytrace=False)
+    pytest.skip(message)
 
 
 BROWSERS = ["chromium", "chromium-browser", "google-chrome", "google-chrome-stable"]
@@ -31,7 +43,37 @@ def chromium() -> str:
         path = shutil.which(name)
         if path:
             return path
-    message = "no Chromium found (apt-get install chromium)"
-    if os.environ.get("CI", "").lower() == "true":
-        pytest.fail(message + "; CI must run the browser check", pytrace=False)
-    pytest.skip(message)
+    unavailable("no Chromium found (apt-get install chromium)", "CI must run the browser check")
+
+
+@pytest.fixture(scope="session")
+def axe_script(request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFactory) -> str:
+    """The source of axe-core's axe.min.js, which test_browser injects into every page.
+
+    The version is the one package-lock.json pins (package.json at the repository's root
+    names it); `npm ci` installs exactly that, checked against the lock's sha512, into a
+    folder of pytest's cache named after the lock's hash, once per machine and lock. With
+    no npm, or no registry to install from, the test is skipped, but fails under CI=true.
+    """
+    lock = (ROOT / "package-lock.json").read_bytes()
+    cache = getattr(request.config, "cache", None)
+    name = "npm-" + hashlib.sha256(lock).hexdigest()[:16]
+    folder = Path(cache.mkdir(name)) if cache else tmp_path_factory.getbasetemp() / name
+    script = folder / "node_modules" / "axe-core" / "axe.min.js"
+    if not script.is_file():
+        npm = shutil.which("npm")
+        if npm is None:
+            unavailable("no npm found for axe-core (apt-get install npm)",
+                        "CI must run the accessibility check")
+        folder.mkdir(parents=True, exist_ok=True)
+        for file in ("package.json", "package-lock.json"):
+            shutil.copyfile(ROOT / file, folder / file)
+        proc = subprocess.run(
+            [str(npm), "ci", "--ignore-scripts", "--no-audit", "--no-fund"],
+            cwd=folder, capture_output=True, text=True, timeout=600,
+        )
+        if proc.returncode != 0 or not script.is_file():
+            output = (proc.stdout + proc.stderr)[-2000:]
+            unavailable("npm ci could not install axe-core:\n" + output,
+                        "CI must run the accessibility check")
+    return script.read_text(encoding="utf-8")
