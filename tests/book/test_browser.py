@@ -10,8 +10,7 @@ has finished typesetting (``MathJax.startup.promise``):
 * at 400 px no display equation reaches past the viewport unless it sits in a box that scrolls
   sideways, and nothing else in the page is cut off at the right edge;
 * every image has loaded (naturalWidth > 0), no file the page asks for is missing, and no
-  request leaves the machine.
-
+  request leaves the machine (a failed load is reported with its URL);
 * no inline formula is cut off: MathJax 3 does not break inline math, and the theme puts each
   inline formula in a box that hides what overflows it (pydata-sphinx-theme's ``span.math``,
   ``overflow: hidden``), so a formula wider than that box is cut with no way to scroll to its
@@ -20,22 +19,23 @@ has finished typesetting (``MathJax.startup.promise``):
   400 px it may scroll inside its own block, above);
 * no accessibility violation that axe-core finds for WCAG 2.1 A and AA (the rules tagged
   ``wcag2a``, ``wcag2aa``, ``wcag21a``, ``wcag21aa``), run in the page once MathJax is done:
-  axe.min.js, the version package-lock.json pins (the ``axe_script`` fixture installs it
-  with ``npm ci``), is injected over the same DevTools pipe. The counts per rule go to the
-  terminal summary ("accessibility");
+  axe.min.js, the version package-lock.json pins (`make test` installs it with ``npm ci``
+  into node_modules/), is evaluated in the page from that file over the same DevTools pipe,
+  in the visit the other checks make. The counts per rule and axe's time go to the terminal
+  summary ("accessibility"); ``test_axe_reports_violations`` shows on a small page with known
+  faults that the same run reports them;
 * the animation's player can be worked from the keyboard: each of its controls takes the
   focus and has a name.
 
-The pages are those of the book (its reference aside), of the student site (likewise) and
-of the reference site.
+The pages are those of the book (its reference aside) and of the reference site.
 
 Screenshots of every page at both widths are kept in ``<build>/_screenshots/``.
 
 Chromium is driven through the DevTools protocol over a pipe (``--remote-debugging-pipe``:
 JSON messages separated by NUL bytes on file descriptors 3 and 4), so nothing beyond the
-standard library, Debian's chromium and axe-core from npm is needed. Skipped when no Chromium
-or no npm is installed, except under CI=true, where it fails instead (.ci/run installs Debian's
-chromium and npm).
+standard library, Debian's chromium and axe-core from npm is needed. Skipped when Chromium or
+axe-core is missing, except under CI=true, where it fails instead (.ci/run installs Debian's
+chromium and npm, `make test` runs ``npm ci``).
 """
 
 from __future__ import annotations
@@ -51,7 +51,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.conftest import ROOT, SUMMARY, Build
+from tests.conftest import ROOT, SUMMARY
 
 pytestmark = pytest.mark.slow
 
@@ -290,7 +290,7 @@ LOOK = r"""
 
 
 # Run in the page after LOOK (MathJax done) and after axe.min.js: the elements that violate
-# each rule, as "selector | start of the element's HTML".
+# each rule, as "selector | start of the element's HTML", and the rules that ran.
 AXE_RUN = """
 (async () => {
   // MathJax's typeset formulas are aria-hidden (screen readers read the assistive MathML
@@ -299,15 +299,32 @@ AXE_RUN = """
   const result = await axe.run({exclude: [['mjx-container > mjx-math']]}, {
     runOnly: {type: 'tag', values: TAGS},
     resultTypes: ['violations'],
+    // axe preloads the page's media and its style sheets (the "cssom"). A page opened from
+    // file:// is an opaque origin whose style sheets' rules a script may not read, so axe
+    // asks for each sheet again by XMLHttpRequest, which Chromium refuses for file:// URLs
+    // (a Network.loadingFailed per sheet, net::ERR_FAILED). Only css-orientation-lock reads
+    // that preload, and it is not among the rules run (test_no_accessibility_violations
+    // checks): the media only, then.
+    preload: {assets: ['media']},
   });
   const found = {};
   for (const rule of result.violations) {
     found[rule.id] = rule.nodes.map(
       (n) => n.target.join(' ') + ' | ' + n.html.replace(/\\s+/g, ' ').slice(0, 160));
   }
-  return {version: axe.version, violations: found};
+  const ran = ['violations', 'passes', 'incomplete', 'inapplicable'].flatMap(
+    (kind) => result[kind].map((rule) => rule.id));
+  return {version: axe.version, violations: found, ran};
 })()
 """.replace("TAGS", json.dumps(AXE_TAGS))
+
+
+def run_axe(browser: Browser, script: str) -> dict:
+    """axe-core's verdict on the page open in ``browser``: ``script`` (axe.min.js) is
+    evaluated in it, from the file, over the DevTools pipe (nothing is fetched), then run."""
+    browser.evaluate(script + "\n;true")
+    return browser.evaluate(AXE_RUN, timeout=900_000)
+
 
 # Run in in_motion.html: each control of the animation's player takes the keyboard's focus and
 # has a name a screen reader says (axe's own rules check the names, this the focus).
@@ -337,10 +354,11 @@ def pages(html_dir: Path, *besides: str) -> list[Path]:
     ]
 
 
-# The book and the student site hold the reference in reference/ (`make book`, `make
-# book-student`), built from the same sources; it is looked at once, as "docs".
-BESIDES = {"book": ("reference",), "student": ("reference",), "docs": ()}
-SITES = ("book", "student", "docs")
+# The book site holds the reference in reference/ (`make book`); it is looked at as "docs".
+# The student site is the book's pages without the solutions, from the same sources,
+# templates and style sheets: not looked at a second time (that would double the survey).
+BESIDES = {"book": ("reference",), "docs": ()}
+SITES = ("book", "docs")
 
 
 def look_at(
@@ -364,8 +382,9 @@ def look_at(
         browser.wait_for("Page.loadEventFired")
         seen = browser.evaluate(LOOK)
         if axe:
-            browser.evaluate(axe + "\n;true")
-            seen["axe"] = browser.evaluate(AXE_RUN, timeout=900_000)
+            start = time.perf_counter()
+            seen["axe"] = run_axe(browser, axe)
+            seen["axe"]["seconds"] = time.perf_counter() - start
         if name == "in_motion.html":
             seen["player"] = browser.evaluate(PLAYER_KEYS)
         events = browser.events()
@@ -377,9 +396,16 @@ def look_at(
                 and not e["params"]["request"]["url"].startswith(("file:", "data:", "blob:"))
             }
         )
+        # A failed load names the request it ends by its id only: its URL is in the request.
+        urls = {
+            e["params"]["requestId"]: e["params"]["request"]["url"]
+            for e in events
+            if e.get("method") == "Network.requestWillBeSent"
+        }
         seen["failed"] = sorted(
             {
-                f"{e['params'].get('errorText')} ({e['params'].get('type')})"
+                f"{urls.get(e['params']['requestId'], '?')}: {e['params'].get('errorText')}"
+                f" ({e['params'].get('type')})"
                 for e in events
                 if e.get("method") == "Network.loadingFailed"
             }
@@ -407,17 +433,8 @@ def look_at(
 
 
 @pytest.fixture(scope="module")
-def built_student(student_book: Build) -> Path:
-    """The student site's HTML folder (the session's build, shared with test_site)."""
-    if student_book.returncode != 0:
-        pytest.fail("the student site did not build:\n" + student_book.output[-3000:],
-                    pytrace=False)
-    return student_book.outdir
-
-
-@pytest.fixture(scope="module")
-def folders(built_book: Path, built_student: Path, built_docs: Path) -> dict[str, Path]:
-    return {"book": built_book, "student": built_student, "docs": built_docs}
+def folders(built_book: Path, built_docs: Path) -> dict[str, Path]:
+    return {"book": built_book, "docs": built_docs}
 
 
 @pytest.fixture(scope="module")
@@ -457,7 +474,9 @@ def axe_counts(found: dict) -> list[str]:
             for rule, nodes in page["axe"]["violations"].items():
                 rules[rule] = rules.get(rule, 0) + len(nodes)
         counts = ", ".join(f"{rule} {n}" for rule, n in sorted(rules.items())) or "none"
-        lines.append(f"{site} @{width}: {len(seen)} pages, axe-core violations: {counts}")
+        axe_seconds = sum(page["axe"]["seconds"] for page in seen.values())
+        lines.append(f"{site} @{width}: {len(seen)} pages, axe-core violations: {counts}"
+                     f" (axe {axe_seconds:.0f} s)")
     return lines
 
 
@@ -517,17 +536,57 @@ def test_no_accessibility_violations(survey: dict, axe_script: str) -> None:
         if found["violations"]
     }
     assert violations == {}
+    # No rule ran that reads the style sheets axe is told not to preload (AXE_RUN).
+    assert {where: "css-orientation-lock" for where, found in each(survey, "axe").items()
+            if "css-orientation-lock" in found["ran"]} == {}
+
+
+# A page with known violations, and the same page mended: the survey's run of axe-core
+# reports what is wrong (it is not quietly running nothing) and nothing when it is fixed.
+FLAWED_PAGE = """<!DOCTYPE html>
+<html lang="en"><head><meta charset="utf-8"><title>A flawed page</title></head>
+<body><main><h1>A flawed page</h1>
+<p><img src="data:image/gif;base64,R0lGODlhAQABAIAAAAAAAP///yH5BAEAAAAALAAAAAABAAEAAAIBRAA7"
+  FIX_ALT></p>
+<p style="color: FIX_COLOR; background: #fff">Text the reader must be able to read.</p>
+<button type="button" FIX_NAME><span aria-hidden="true">&#9654;</span></button>
+</main></body></html>
+"""
+
+
+def test_axe_reports_violations(chromium: str, axe_script: str, tmp_path: Path) -> None:
+    flawed = FLAWED_PAGE.replace("FIX_ALT", "").replace("FIX_COLOR", "#aaa").replace(
+        "FIX_NAME", "")
+    mended = FLAWED_PAGE.replace("FIX_ALT", 'alt="a dot"').replace(
+        "FIX_COLOR", "#333").replace("FIX_NAME", 'aria-label="Play"')
+    browser = Browser(chromium, tmp_path / "profile")
+    found = {}
+    try:
+        for name, text in (("flawed", flawed), ("mended", mended)):
+            page = tmp_path / f"{name}.html"
+            page.write_text(text, encoding="utf-8")
+            browser.events()
+            browser.call("Page.navigate", session=True, url=page.as_uri())
+            browser.wait_for("Page.loadEventFired")
+            found[name] = run_axe(browser, axe_script)
+            found[name]["failed"] = [e for e in browser.events()
+                                     if e.get("method") == "Network.loadingFailed"]
+    finally:
+        browser.close()
+    # An image without alt text, grey (#aaa) on white (2.3:1), a button with no name.
+    assert set(found["flawed"]["violations"]) == {"image-alt", "color-contrast", "button-name"}
+    assert found["flawed"]["violations"]["image-alt"][0].startswith("img | <img")
+    assert found["mended"]["violations"] == {}
+    assert found["flawed"]["failed"] == found["mended"]["failed"] == []
 
 
 def test_the_animation_works_from_the_keyboard(survey: dict) -> None:
-    for site in ("book", "student"):
-        controls = survey[(site, 1280)]["in_motion.html"]["player"]
-        # matplotlib's player: nine buttons, the frame slider, three loop modes, each of
-        # which must take the focus (tabIndex 0: reached with Tab) and have a name.
-        assert controls is not None and len(controls) >= 10, controls
-        assert [c for c in controls if not (c["focused"] and c["tabIndex"] >= 0 and c["name"])] \
-            == []
-        assert any(c["type"] == "range" for c in controls)
+    controls = survey[("book", 1280)]["in_motion.html"]["player"]
+    # matplotlib's player: nine buttons, the frame slider, three loop modes, each of which
+    # must take the focus (tabIndex 0: reached with Tab) and have a name.
+    assert controls is not None and len(controls) >= 10, controls
+    assert [c for c in controls if not (c["focused"] and c["tabIndex"] >= 0 and c["name"])] == []
+    assert any(c["type"] == "range" for c in controls)
 
 
 def test_no_display_equation_is_cut_off_on_a_phone(survey: dict) -> None:
