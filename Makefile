@@ -22,6 +22,7 @@ PYTHON ?= python3
 VENV   := .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed
+AXE    := node_modules/axe-core/axe.min.js
 SPHINX := $(PY) -m sphinx -n -W --keep-going
 
 # The notebook kernels and sphinx-build must see the venv (the package is installed there,
@@ -92,8 +93,20 @@ bench: $(STAMP)
 # pytest runs it all, configured in pyproject.toml: tests/ (including the book build with
 # forced execution, the docs build, the notebooks and the browser check) and the doctests
 # of src/, book/*.md, docs/*.md and README.md.
-test: $(STAMP)
+test: $(STAMP) $(AXE)
 	$(PY) -m pytest
+
+# axe-core for the browser test's accessibility check (tests/book/test_browser.py injects
+# axe.min.js into every page): the version package-lock.json pins, installed with `npm ci`
+# (checked against the lock's sha512; no install scripts) into node_modules/, kept out of git,
+# whenever it is missing or older than the lock. Without npm the check is skipped on a
+# developer's machine and fails under CI=true (.ci/run installs npm).
+$(AXE): package.json package-lock.json
+	@if command -v npm >/dev/null 2>&1; then \
+	    npm ci --ignore-scripts --no-audit --no-fund && touch $@; \
+	else \
+	    echo "no npm: tests/book/test_browser.py will skip the accessibility check"; \
+	fi
 
 test-fast: $(STAMP)
 	$(PY) -m pytest -m "not slow"

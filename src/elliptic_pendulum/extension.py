@@ -162,8 +162,8 @@ def one_sided_derivatives(g: Callable, x: float, order: int = 1, h: float | None
 
     .. math::
 
-        g'(x \mp 0) \approx \pm\frac{3g(x) - 4g(x \mp h) + g(x \mp 2h)}{2h}, \qquad
-        g''(x \mp 0) \approx \frac{2g(x) - 5g(x \mp h) + 4g(x \mp 2h) - g(x \mp 3h)}{h^2}.
+        g'(x \mp 0) &\approx \pm\frac{3g(x) - 4g(x \mp h) + g(x \mp 2h)}{2h}, \\
+        g''(x \mp 0) &\approx \frac{2g(x) - 5g(x \mp h) + 4g(x \mp 2h) - g(x \mp 3h)}{h^2}.
 
     Both are second-order accurate, and use values on one side of x only, so they see a kink (or a
     jump of g'') at x that a central quotient would average away. Lemma 2.1 says g is differentiable

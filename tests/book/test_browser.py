@@ -10,14 +10,32 @@ has finished typesetting (``MathJax.startup.promise``):
 * at 400 px no display equation reaches past the viewport unless it sits in a box that scrolls
   sideways, and nothing else in the page is cut off at the right edge;
 * every image has loaded (naturalWidth > 0), no file the page asks for is missing, and no
-  request leaves the machine.
+  request leaves the machine (a failed load is reported with its URL);
+* no inline formula is cut off: MathJax 3 does not break inline math, and the theme puts each
+  inline formula in a box that hides what overflows it (pydata-sphinx-theme's ``span.math``,
+  ``overflow: hidden``), so a formula wider than that box is cut with no way to scroll to its
+  end; a box that scrolls (reader.css) is fine;
+* at 1280 px every display formula fits its text column, its equation number included (at
+  400 px it may scroll inside its own block, above);
+* no accessibility violation that axe-core finds for WCAG 2.1 A and AA (the rules tagged
+  ``wcag2a``, ``wcag2aa``, ``wcag21a``, ``wcag21aa``), run in the page once MathJax is done:
+  axe.min.js, the version package-lock.json pins (`make test` installs it with ``npm ci``
+  into node_modules/), is evaluated in the page from that file over the same DevTools pipe,
+  in the visit the other checks make. The counts per rule and axe's time go to the terminal
+  summary ("accessibility"); ``test_axe_reports_violations`` shows on a small page with known
+  faults that the same run reports them;
+* the animation's player can be worked from the keyboard: each of its controls takes the
+  focus and has a name.
+
+The pages are those of the book (its reference aside) and of the reference site.
 
 Screenshots of every page at both widths are kept in ``<build>/_screenshots/``.
 
 Chromium is driven through the DevTools protocol over a pipe (``--remote-debugging-pipe``:
 JSON messages separated by NUL bytes on file descriptors 3 and 4), so nothing beyond the
-standard library and Debian's chromium is needed. Skipped when no Chromium is installed,
-except under CI=true, where it fails instead (.ci/run installs Debian's chromium).
+standard library, Debian's chromium and axe-core from npm is needed. Skipped when Chromium or
+axe-core is missing, except under CI=true, where it fails instead (.ci/run installs Debian's
+chromium and npm, `make test` runs ``npm ci``).
 """
 
 from __future__ import annotations
@@ -27,16 +45,21 @@ import fcntl
 import json
 import os
 import subprocess
+import time
 from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
+
+from tests.conftest import ROOT, SUMMARY
 
 pytestmark = pytest.mark.slow
 
 WIDTHS = (1280, 400)
 HEIGHT = 900
 NOTE_EQUATIONS = set(range(1, 47))  # the note numbers its equations (1)-(46)
+# WCAG 2.0 and 2.1, levels A and AA, as axe-core tags its rules (its doc/rule-descriptions.md).
+AXE_TAGS = ["wcag2a", "wcag2aa", "wcag21a", "wcag21aa"]
 
 
 class Browser:
@@ -126,14 +149,17 @@ class Browser:
                 return
             self._events.append(self._read())
 
-    def evaluate(self, expression: str):
+    def evaluate(self, expression: str, timeout: int = 60_000):
+        """The value of ``expression`` (a promise awaited). ``timeout`` (ms) ends a script
+        that runs that long without yielding; its promise then never settles and the call
+        waits for ever, so it must cover the longest run (axe-core on the longest page)."""
         result = self.call(
             "Runtime.evaluate",
             session=True,
             expression=expression,
             awaitPromise=True,
             returnByValue=True,
-            timeout=60_000,
+            timeout=timeout,
         )
         if "exceptionDetails" in result:
             raise RuntimeError(json.dumps(result["exceptionDetails"])[:2000])
@@ -195,6 +221,45 @@ LOOK = r"""
       cutEquations.push(label(eq));
     }
   }
+  // An inline formula cut off by a box that hides its overflow: the typeset formula (its
+  // mjx-math) reaches past a box around it, up to its line (the theme's span.math), that does
+  // not scroll, so the end of the formula cannot be seen at all. (Not scrollWidth: MathJax's
+  // assistive MathML, invisible and laid out in the browser's own wider MathML fonts, makes
+  // every box look wider than what it shows.)
+  const hides = (el) => ['hidden', 'clip'].includes(getComputedStyle(el).overflowX);
+  const cutInline = [];
+  for (const eq of document.querySelectorAll('mjx-container:not([display="true"])')) {
+    if (eq.closest('mjx-assistive-mml') || !shown(eq)) continue;
+    const math = eq.querySelector(':scope > mjx-math') || eq;
+    const r = math.getBoundingClientRect();
+    const line = eq.closest('p, li, dd, dt, td, th, div, section') || document.body;
+    for (let a = eq; a && a !== line; a = a.parentElement) {
+      const box = a.getBoundingClientRect();
+      if (hides(a) && (r.right > box.right + 1 || r.left < box.left - 1)) {
+        cutInline.push(label(eq));
+        break;
+      }
+    }
+  }
+  // A display formula wider than the text column (checked at desktop width): its block
+  // scrolls (reader.css) or it reaches past the column, and its equation number, MathJax's
+  // mjx-labels, is out of view. Every part of it, the number included, lies inside the
+  // content box of its column (the article) and inside its own block.
+  const wideDisplays = [];
+  for (const eq of document.querySelectorAll('mjx-container[display="true"]')) {
+    if (!shown(eq)) continue;
+    const column = eq.closest('article') || document.querySelector('main') || document.body;
+    const box = column.getBoundingClientRect();
+    const pad = getComputedStyle(column);
+    const left = box.left + parseFloat(pad.paddingLeft);
+    const right = box.right - parseFloat(pad.paddingRight);
+    const parts = [eq, ...eq.querySelectorAll('mjx-math, mjx-labels, mjx-mtd, mjx-mlabeledtr')];
+    const past = parts.some((el) => {
+      const r = el.getBoundingClientRect();
+      return r.width > 0 && (r.left < left - 1 || r.right > right + 1);
+    });
+    if (past || eq.scrollWidth > eq.clientWidth + 1) wideDisplays.push(label(eq));
+  }
   // Anything else of the page that reaches past an edge, outermost only.
   const cut = [];
   const main = document.querySelector('main') || document.body;
@@ -210,7 +275,7 @@ LOOK = r"""
     try { await img.decode(); } catch (e) { /* reported below */ }
   }
   return {
-    merrors, numbers, cutEquations,
+    merrors, numbers, cutEquations, cutInline, wideDisplays,
     cut: cut.filter((el) => !el.matches('mjx-container[display="true"]')).map(
       (el) => el.tagName.toLowerCase() + '.' + [...el.classList].join('.') + ': '
         + (el.textContent || '').trim().slice(0, 60)),
@@ -220,6 +285,61 @@ LOOK = r"""
     typeset: document.querySelectorAll('mjx-container').length,
     height: document.documentElement.scrollHeight,
   };
+})()
+"""
+
+
+# Run in the page after LOOK (MathJax done) and after axe.min.js: the elements that violate
+# each rule, as "selector | start of the element's HTML", and the rules that ran.
+AXE_RUN = """
+(async () => {
+  // MathJax's typeset formulas are aria-hidden (screen readers read the assistive MathML
+  // beside them) and hold most of a chapter's elements as glyph boxes with no text: left out,
+  // which makes axe several times faster on the long chapters.
+  const result = await axe.run({exclude: [['mjx-container > mjx-math']]}, {
+    runOnly: {type: 'tag', values: TAGS},
+    resultTypes: ['violations'],
+    // axe preloads the page's media and its style sheets (the "cssom"). A page opened from
+    // file:// is an opaque origin whose style sheets' rules a script may not read, so axe
+    // asks for each sheet again by XMLHttpRequest, which Chromium refuses for file:// URLs
+    // (a Network.loadingFailed per sheet, net::ERR_FAILED). Only css-orientation-lock reads
+    // that preload, and it is not among the rules run (test_no_accessibility_violations
+    // checks): the media only, then.
+    preload: {assets: ['media']},
+  });
+  const found = {};
+  for (const rule of result.violations) {
+    found[rule.id] = rule.nodes.map(
+      (n) => n.target.join(' ') + ' | ' + n.html.replace(/\\s+/g, ' ').slice(0, 160));
+  }
+  const ran = ['violations', 'passes', 'incomplete', 'inapplicable'].flatMap(
+    (kind) => result[kind].map((rule) => rule.id));
+  return {version: axe.version, violations: found, ran};
+})()
+""".replace("TAGS", json.dumps(AXE_TAGS))
+
+
+def run_axe(browser: Browser, script: str) -> dict:
+    """axe-core's verdict on the page open in ``browser``: ``script`` (axe.min.js) is
+    evaluated in it, from the file, over the DevTools pipe (nothing is fetched), then run."""
+    browser.evaluate(script + "\n;true")
+    return browser.evaluate(AXE_RUN, timeout=900_000)
+
+
+# Run in in_motion.html: each control of the animation's player takes the keyboard's focus and
+# has a name a screen reader says (axe's own rules check the names, this the focus).
+PLAYER_KEYS = r"""
+(() => {
+  const player = document.querySelector('.ep-player .animation');
+  if (!player) return null;
+  const controls = [...player.querySelectorAll('button, input')];
+  return controls.map((el) => {
+    el.focus();
+    const name = el.getAttribute('aria-label') || el.labels && [...el.labels].map(
+      (l) => l.textContent).join(' ') || el.textContent;
+    return {tag: el.tagName.toLowerCase(), type: el.type, name: (name || '').trim(),
+            focused: document.activeElement === el, tabIndex: el.tabIndex};
+  });
 })()
 """
 
@@ -235,11 +355,15 @@ def pages(html_dir: Path, *besides: str) -> list[Path]:
 
 
 # The book site holds the reference in reference/ (`make book`); it is looked at as "docs".
+# The student site is the book's pages without the solutions, from the same sources,
+# templates and style sheets: not looked at a second time (that would double the survey).
 BESIDES = {"book": ("reference",), "docs": ()}
+SITES = ("book", "docs")
 
 
 def look_at(
-    browser: Browser, html_dir: Path, width: int, besides: tuple[str, ...] = ()
+    browser: Browser, html_dir: Path, width: int, besides: tuple[str, ...] = (),
+    axe: str = "",
 ) -> Iterator[tuple[str, dict]]:
     browser.call(
         "Emulation.setDeviceMetricsOverride",
@@ -257,6 +381,12 @@ def look_at(
         browser.call("Page.navigate", session=True, url=page.as_uri())
         browser.wait_for("Page.loadEventFired")
         seen = browser.evaluate(LOOK)
+        if axe:
+            start = time.perf_counter()
+            seen["axe"] = run_axe(browser, axe)
+            seen["axe"]["seconds"] = time.perf_counter() - start
+        if name == "in_motion.html":
+            seen["player"] = browser.evaluate(PLAYER_KEYS)
         events = browser.events()
         seen["network"] = sorted(
             {
@@ -266,9 +396,16 @@ def look_at(
                 and not e["params"]["request"]["url"].startswith(("file:", "data:", "blob:"))
             }
         )
+        # A failed load names the request it ends by its id only: its URL is in the request.
+        urls = {
+            e["params"]["requestId"]: e["params"]["request"]["url"]
+            for e in events
+            if e.get("method") == "Network.requestWillBeSent"
+        }
         seen["failed"] = sorted(
             {
-                f"{e['params'].get('errorText')} ({e['params'].get('type')})"
+                f"{urls.get(e['params']['requestId'], '?')}: {e['params'].get('errorText')}"
+                f" ({e['params'].get('type')})"
                 for e in events
                 if e.get("method") == "Network.loadingFailed"
             }
@@ -296,26 +433,54 @@ def look_at(
 
 
 @pytest.fixture(scope="module")
-def survey(built_book: Path, built_docs: Path, chromium: str, tmp_path_factory, request) -> dict:
-    """(site, width) -> {page: what the browser saw}, for every page of both builds."""
+def folders(built_book: Path, built_docs: Path) -> dict[str, Path]:
+    return {"book": built_book, "docs": built_docs}
+
+
+@pytest.fixture(scope="module")
+def survey(
+    folders: dict[str, Path], chromium: str, axe_script: str, tmp_path_factory, request
+) -> dict:
+    """(site, width) -> {page: what the browser saw}, for every page of the three sites."""
     browser = Browser(chromium, tmp_path_factory.mktemp("chromium-profile"))
+    found, seconds = {}, {}
     try:
-        found = {
-            (site, width): dict(look_at(browser, html, width, BESIDES[site]))
-            for site, html in (("book", built_book), ("docs", built_docs))
-            for width in WIDTHS
-        }
+        for site in SITES:
+            for width in WIDTHS:
+                start = time.perf_counter()
+                found[site, width] = dict(look_at(browser, folders[site], width,
+                                                  BESIDES[site], axe_script))
+                seconds[site, width] = time.perf_counter() - start
     finally:
         browser.close()
+    # What the survey costs, per site and width (the CI budget is counted in minutes).
+    SUMMARY["accessibility"] = [f"{line}; {seconds[key]:.0f} s"
+                                for key, line in zip(found, axe_counts(found), strict=True)]
     # Say where the screenshots are: the builds of a test session live in a temporary folder.
     reporter = request.config.pluginmanager.get_plugin("terminalreporter")
     if reporter is not None:
-        for html in (built_book, built_docs):
+        for html in folders.values():
             reporter.write_line(f"\nscreenshots: {html / '_screenshots'}")
     return found
 
 
-def each(survey: dict, key: str, sites=("book", "docs"), widths=WIDTHS) -> dict:
+def axe_counts(found: dict) -> list[str]:
+    """One line per site and width: the pages looked at, and the elements violating each
+    axe rule (or none)."""
+    lines = []
+    for (site, width), seen in found.items():
+        rules: dict[str, int] = {}
+        for page in seen.values():
+            for rule, nodes in page["axe"]["violations"].items():
+                rules[rule] = rules.get(rule, 0) + len(nodes)
+        counts = ", ".join(f"{rule} {n}" for rule, n in sorted(rules.items())) or "none"
+        axe_seconds = sum(page["axe"]["seconds"] for page in seen.values())
+        lines.append(f"{site} @{width}: {len(seen)} pages, axe-core violations: {counts}"
+                     f" (axe {axe_seconds:.0f} s)")
+    return lines
+
+
+def each(survey: dict, key: str, sites=SITES, widths=WIDTHS) -> dict:
     """{"site page @width": survey value} where that value is not empty."""
     return {
         f"{site} {page} @{width}": seen[key]
@@ -326,9 +491,10 @@ def each(survey: dict, key: str, sites=("book", "docs"), widths=WIDTHS) -> dict:
     }
 
 
-def test_every_page_was_looked_at(survey: dict, built_book: Path, built_docs: Path) -> None:
+def test_every_page_was_looked_at(survey: dict, folders: dict[str, Path]) -> None:
+    assert {site for site, _ in survey} == set(SITES)
     for (site, _), found in survey.items():
-        html = built_book if site == "book" else built_docs
+        html = folders[site]
         assert set(found) == {str(p.relative_to(html)) for p in pages(html, *BESIDES[site])}
         assert "index.html" in found
     # MathJax ran: the chapters have typeset formulas
@@ -349,6 +515,78 @@ def test_equation_numbers_are_the_notes_1_to_46(survey: dict) -> None:
     numbers = {int(n) for n in found if n.isdigit()}
     assert sorted(NOTE_EQUATIONS - numbers) == [], "missing equation numbers"
     assert sorted(set(found) - {str(n) for n in NOTE_EQUATIONS}) == [], "unexpected numbers"
+
+
+def test_no_inline_formula_is_cut_off(survey: dict) -> None:
+    assert each(survey, "cutInline") == {}
+
+
+def test_every_display_formula_fits_the_column_on_a_desktop(survey: dict) -> None:
+    assert each(survey, "wideDisplays", widths=(1280,)) == {}
+
+
+def test_no_accessibility_violations(survey: dict, axe_script: str) -> None:
+    versions = {seen["axe"]["version"] for found in survey.values() for seen in found.values()}
+    # The version package-lock.json pins ran in every page.
+    lock = json.loads((ROOT / "package-lock.json").read_text(encoding="utf-8"))
+    assert versions == {lock["packages"]["node_modules/axe-core"]["version"]}
+    violations = {
+        where: found["violations"]
+        for where, found in each(survey, "axe").items()
+        if found["violations"]
+    }
+    assert violations == {}
+    # No rule ran that reads the style sheets axe is told not to preload (AXE_RUN).
+    assert {where: "css-orientation-lock" for where, found in each(survey, "axe").items()
+            if "css-orientation-lock" in found["ran"]} == {}
+
+
+# A page with known violations, and the same page mended: the survey's run of axe-core
+# reports what is wrong (it is not quietly running nothing) and nothing when it is fixed.
+FLAWED_PAGE = """<!DOCTYPE html>
+<html lang="en"><head><meta charset="utf-8"><title>A flawed page</title></head>
+<body><main><h1>A flawed page</h1>
+<p><img src="data:image/gif;base64,R0lGODlhAQABAIAAAAAAAP///yH5BAEAAAAALAAAAAABAAEAAAIBRAA7"
+  FIX_ALT></p>
+<p style="color: FIX_COLOR; background: #fff">Text the reader must be able to read.</p>
+<button type="button" FIX_NAME><span aria-hidden="true">&#9654;</span></button>
+</main></body></html>
+"""
+
+
+def test_axe_reports_violations(chromium: str, axe_script: str, tmp_path: Path) -> None:
+    flawed = FLAWED_PAGE.replace("FIX_ALT", "").replace("FIX_COLOR", "#aaa").replace(
+        "FIX_NAME", "")
+    mended = FLAWED_PAGE.replace("FIX_ALT", 'alt="a dot"').replace(
+        "FIX_COLOR", "#333").replace("FIX_NAME", 'aria-label="Play"')
+    browser = Browser(chromium, tmp_path / "profile")
+    found = {}
+    try:
+        for name, text in (("flawed", flawed), ("mended", mended)):
+            page = tmp_path / f"{name}.html"
+            page.write_text(text, encoding="utf-8")
+            browser.events()
+            browser.call("Page.navigate", session=True, url=page.as_uri())
+            browser.wait_for("Page.loadEventFired")
+            found[name] = run_axe(browser, axe_script)
+            found[name]["failed"] = [e for e in browser.events()
+                                     if e.get("method") == "Network.loadingFailed"]
+    finally:
+        browser.close()
+    # An image without alt text, grey (#aaa) on white (2.3:1), a button with no name.
+    assert set(found["flawed"]["violations"]) == {"image-alt", "color-contrast", "button-name"}
+    assert found["flawed"]["violations"]["image-alt"][0].startswith("img | <img")
+    assert found["mended"]["violations"] == {}
+    assert found["flawed"]["failed"] == found["mended"]["failed"] == []
+
+
+def test_the_animation_works_from_the_keyboard(survey: dict) -> None:
+    controls = survey[("book", 1280)]["in_motion.html"]["player"]
+    # matplotlib's player: nine buttons, the frame slider, three loop modes, each of which
+    # must take the focus (tabIndex 0: reached with Tab) and have a name.
+    assert controls is not None and len(controls) >= 10, controls
+    assert [c for c in controls if not (c["focused"] and c["tabIndex"] >= 0 and c["name"])] == []
+    assert any(c["type"] == "range" for c in controls)
 
 
 def test_no_display_equation_is_cut_off_on_a_phone(survey: dict) -> None:

@@ -262,8 +262,8 @@ def free_flight(theta0: float, dtheta0: float = 0.0, omega0: float = 1.0) -> Fre
     :math:`v = \theta_s'(\cos\theta_s, \sin\theta_s)`, the distance to the pivot on the parabola
     is 1 again when
 
-    .. math:: s^2\left(\tfrac{g^2}{4}s^2 - g v_y s + \frac{T_s}{m\ell}\right) = 0, \qquad
-              s = \frac{2}{g}\left(v_y + \sqrt{v_y^2 - T_s/(m\ell)}\right) \;
+    .. math:: &s^2\left(\tfrac{g^2}{4}s^2 - g v_y s + \frac{T_s}{m\ell}\right) = 0, \\
+              &s = \frac{2}{g}\left(v_y + \sqrt{v_y^2 - T_s/(m\ell)}\right) \;
               \Bigl(= \frac{4 v_y}{g} \text{ when } T_s = 0\Bigr)
 
     (the cross term :math:`x_0 v_x + y_0 v_y` vanishes: the velocity is tangent).

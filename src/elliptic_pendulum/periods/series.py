@@ -91,8 +91,8 @@ def period_series_coefficients(n: int) -> list[Fraction]:
     :math:`(\sin\theta_0\,R')' = \tfrac14\sin\theta_0\,R`; with
     :math:`E_j = 64^j (2j)!\,a_j` (integers) and :math:`\sigma = (-1)^{N-j}`,
 
-    .. math:: 8(N+1)(2N+3)\,E_{N+1} = \sum_{j=0}^{N} \sigma\,64^{N+1-j}\,E_j
-              \left[(2N+3)\binom{2N+1}{2j} + 8j\binom{2N+3}{2j}\right].
+    .. math:: 8(N+1)(2N+3)\,E_{N+1} &= \sum_{j=0}^{N} \sigma\,64^{N+1-j}\,E_j \\
+              &\qquad \times \left[(2N+3)\binom{2N+1}{2j} + 8j\binom{2N+3}{2j}\right].
 
     Radius of convergence :math:`\pi` (in
     :math:`\theta_0`): the nearest singularities are the separatrix amplitudes :math:`\pm\pi`,

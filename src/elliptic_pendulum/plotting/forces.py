@@ -30,8 +30,8 @@ _axes = new_axes
 def plot_tension(theta0: float, omega0: float = 1.0, ax: Any = None) -> Any:
     r"""Plot the rod's tension T/(mg) along one period of a swing released at rest from θ0.
 
-    .. math:: T = m\ell(\theta')^2 + mg\cos\theta \quad (4), \qquad
-              \frac{T}{mg} = 3\cos\theta - 2\cos\theta_0 \text{ (released at rest)}
+    .. math:: T &= m\ell(\theta')^2 + mg\cos\theta \quad (4), \\
+              \frac{T}{mg} &= 3\cos\theta - 2\cos\theta_0 \text{ (released at rest)}
 
     Where T < 0 (shaded) the rod pushes the bob outwards: above 90° near the turning points.
     A string would go slack there. The tension is that of
