@@ -15,7 +15,7 @@
 #   make test         everything: unit, property and doctests, book and docs builds,
 #                     notebook execution, headless-Chromium check (see tests/)
 #   make test-fast    the quick tier for the edit-test loop: unit, property and doctests
-#                     (no builds, no venv creation, no browser), pytest -m "not slow"
+#                     (no builds, no venv creation, no browser), pytest -m "not slow" -n 2
 #   make lint         ruff (code, tests, tools, book and docs), mypy, the import contracts
 
 PYTHON ?= python3
@@ -91,10 +91,13 @@ bench: $(STAMP)
 	$(PY) benchmarks/bench_theta.py
 
 # pytest runs it all, configured in pyproject.toml: tests/ (including the book build with
-# forced execution, the docs build, the notebooks and the browser check) and the doctests
-# of src/, book/*.md, docs/*.md and README.md.
+# every page executed, the docs build, the notebooks, nbgrader, the PDFs and the browser
+# check) and the doctests of src/, book/*.md, docs/*.md and README.md. In two runs: the quick
+# tier on both cores (pytest-xdist: its tests share nothing), then the build tier in one
+# process, whose session builds the book once for all its tests.
 test: $(STAMP) $(AXE)
-	$(PY) -m pytest
+	$(PY) -m pytest -m "not slow" -n 2
+	$(PY) -m pytest -m slow
 
 # axe-core for the browser test's accessibility check (tests/book/test_browser.py injects
 # axe.min.js into every page): the version package-lock.json pins, installed with `npm ci`
@@ -109,7 +112,7 @@ $(AXE): package.json package-lock.json
 	fi
 
 test-fast: $(STAMP)
-	$(PY) -m pytest -m "not slow"
+	$(PY) -m pytest -m "not slow" -n 2
 
 # The layers of the package are import-linter contracts in pyproject.toml.
 lint: $(STAMP)

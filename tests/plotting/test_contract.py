@@ -9,6 +9,8 @@ call here, as the book calls it.
 
 from __future__ import annotations
 
+import functools
+
 import matplotlib
 
 matplotlib.use("Agg")
@@ -34,7 +36,10 @@ _K = 0.9
 _U = np.linspace(-2, 2, 200) * float(ep.complete_integral(_K))
 
 
+@functools.cache
 def _curve():
+    # Computed once for the module (a continuation of periodic orbits takes seconds); the
+    # plotting functions only read it.
     return ep.response_curve(0.15, 0.05, frequencies=(0.6, 1.1), step=0.1)
 
 
