@@ -2,7 +2,10 @@
 nbgrader's own commands: the expectations are nbgrader's, not ours.
 
 From this session's book build (its instructor notebooks), the course is written into a
-temporary folder with its own sqlite gradebook; then, per assignment:
+temporary folder with its own sqlite gradebook. nbgrader runs in a venv of its own, as on a
+teacher's JupyterHub: nbgrader from the package index and the instructor bundle installed by
+its README's command (the project's venv stays without it: nbgrader brings ipywidgets, which
+would change what the book's cells draw). Then, per assignment:
 
 * ``nbgrader generate_assignment`` releases it, and the release holds no solution, no hidden
   test and no model answer;
@@ -28,41 +31,76 @@ from tools.classroom import nbgrader as course
 pytestmark = pytest.mark.slow
 
 
-def _nbgrader(folder: Path, *args: str) -> subprocess.CompletedProcess[str]:
+GRADES = """
+import json, sys
+from nbgrader.api import Gradebook
+db, course, names = sys.argv[1], sys.argv[2], sys.argv[3:]
+out = {}
+with Gradebook(db, course) as gb:
+    for name in names:
+        for student in ("solutions", "blank"):
+            sub = gb.find_submission_notebook(name, name, student)
+            # The autograded cells (nbgrader also scores an untouched written answer 0).
+            out.setdefault(name, {})[student] = {
+                g.name: (g.score, g.max_score) for g in sub.grades if g.cell.cell_type == "code"}
+print(json.dumps(out))
+"""
+
+
+@pytest.fixture(scope="session")
+def grader_venv(built_book: Path, tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """A fresh venv with nbgrader and the instructor bundle (its README's install command)."""
+    import zipfile
+
+    from tests.book.test_notebooks import readme_install
+    from tools.classroom import bundle
+
+    unzipped = tmp_path_factory.mktemp("grader-bundle")
+    archive = built_book / "classroom" / f"{bundle.bundle_name('instructor')}.zip"
+    with zipfile.ZipFile(archive) as z:
+        z.extractall(unzipped)
+    (folder,) = unzipped.iterdir()
+    venv = tmp_path_factory.mktemp("grader-venv") / "venv"
+    subprocess.run([sys.executable, "-m", "venv", str(venv)], check=True)
+    python = venv / "bin" / "python"
+    argv = readme_install(folder)
+    assert argv[:4] == ["python", "-m", "pip", "install"], argv
+    proc = subprocess.run([str(python), *argv[1:4], "--quiet", "nbgrader>=0.9", *argv[4:]],
+                          cwd=folder, capture_output=True, text=True, timeout=1800)
+    assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
+    return venv
+
+
+def _nbgrader(venv: Path, folder: Path, *args: str) -> subprocess.CompletedProcess[str]:
     # nbgrader runs the `alembic` script of its environment to create the gradebook, and
-    # the notebooks' kernel is this interpreter's: its bin folder first on the PATH.
-    env = dict(os.environ, PATH=str(Path(sys.executable).parent) + os.pathsep
-               + os.environ.get("PATH", ""))
-    proc = subprocess.run([sys.executable, "-m", "nbgrader", *args], cwd=folder, env=env,
-                          capture_output=True, text=True, timeout=1800)
+    # the notebooks' kernel is its interpreter's: its bin folder first on the PATH.
+    env = dict(os.environ, PATH=str(venv / "bin") + os.pathsep + os.environ.get("PATH", ""))
+    env.pop("VIRTUAL_ENV", None)
+    proc = subprocess.run([str(venv / "bin" / "python"), "-m", "nbgrader", *args], cwd=folder,
+                          env=env, capture_output=True, text=True, timeout=1800)
     assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-5000:]
     return proc
 
 
 @pytest.fixture(scope="session")
-def graded(built_book: Path, tmp_path_factory: pytest.TempPathFactory) -> dict:
+def graded(built_book: Path, grader_venv: Path, tmp_path_factory: pytest.TempPathFactory) -> dict:
     folder = tmp_path_factory.mktemp("nbgrader")
     points = course.write_course(built_book / "classroom" / "instructor", folder)
     for name in points:
-        _nbgrader(folder, "generate_assignment", name, "--force")
+        _nbgrader(grader_venv, folder, "generate_assignment", name, "--force")
         for student, origin in (("solutions", "source"), ("blank", "release")):
             target = folder / "submitted" / student / name
             shutil.copytree(folder / origin / name, target)
         # Both submissions in one run (each student's notebook in a kernel of its own).
-        _nbgrader(folder, "autograde", name, "--create", "--force")
-    from nbgrader.api import Gradebook
-
-    scores: dict[str, dict[str, dict[str, tuple[float, float]]]] = {}
-    with Gradebook(f"sqlite:///{folder / 'gradebook.db'}", course.COURSE_ID) as gb:
-        for name in points:
-            for student in ("solutions", "blank"):
-                sub = gb.find_submission_notebook(name, name, student)
-                # The autograded cells (nbgrader also scores an untouched written answer 0).
-                scores.setdefault(name, {})[student] = {
-                    g.name: (g.score, g.max_score) for g in sub.grades
-                    if g.cell.cell_type == "code"
-                }
+        _nbgrader(grader_venv, folder, "autograde", name, "--create", "--force")
+    proc = subprocess.run(
+        [str(grader_venv / "bin" / "python"), "-c", GRADES, f"sqlite:///{folder / 'gradebook.db'}",
+         course.COURSE_ID, *points], capture_output=True, text=True, timeout=600)
+    assert proc.returncode == 0, proc.stderr[-3000:]
+    scores = json.loads(proc.stdout)
     return {"folder": folder, "points": points, "scores": scores}
+
+
 
 
 def test_one_assignment_per_chapter_with_exercises(graded: dict, built_book: Path) -> None:
