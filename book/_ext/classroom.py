@@ -107,7 +107,8 @@ def hint_block(label: str) -> str:
     if exercise.written is not None:
         lines.append(exercise.written)
     if exercise.values:
-        names = ", ".join(f"`{v.name}`" for v in exercise.values)
+        # Separated by semicolons: "P30, short30, one_percent" is a solution's own line.
+        names = "; ".join(f"`{v.name}`" for v in exercise.values)
         lines.append(f"In this chapter's notebook, the cell under the exercise checks your "
                      f"results ({names}) and says what to look at if one is not right yet.")
     body = "\n\n".join(lines)

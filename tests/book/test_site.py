@@ -293,7 +293,10 @@ SEARCH = r"""
     const items = document.querySelectorAll('#search-results li');
     const snippets = [...document.querySelectorAll('#search-results li p.context')]
       .filter((p) => p.textContent.trim().length > 20);
-    const done = typeof Search !== 'undefined' && Search._pulse_status === -1 && items.length > 0;
+    // Finished when searchtools.js says so in its status line (its _pulse_status can go back
+    // to counting after the search stops: a pulse timer that fires late restarts it).
+    const done = typeof Search !== 'undefined' && Search.status &&
+      Search.status.innerText.startsWith('Search finished') && items.length > 0;
     if (done && snippets.length > 0) {
       return {items: items.length, snippets: snippets.length,
               highlighted: document.querySelectorAll('#search-results p.context .highlighted')

@@ -96,7 +96,7 @@ def test_every_exercise_has_its_folded_hint_in_both_sites(
             assert html.count('<p class="admonition-title">Hint</p>') == exercises, page
             for label, exercise in selfcheck.EXERCISES.items():
                 if f'id="{label}"' in html and exercise.values:
-                    names = ", ".join(f"{v.name}" for v in exercise.values)
+                    names = "; ".join(f"{v.name}" for v in exercise.values)
                     text = re.sub(r"<[^>]+>", "", html)
                     assert f"checks your results ({names})" in text, (page, label)
 
