@@ -1,8 +1,14 @@
 # Entry points of elliptic-pendulum. Every target creates the virtual environment first,
 # so on a fresh machine `make book` and `make test` are the only set-up commands.
 #
-#   make book         the site in book/_build/html: the book and its reference in reference/,
-#                     one self-contained folder (myst-nb cache: unchanged cells are not re-run)
+#   make book         the site in book/_build/html: the book, its Japanese edition in ja/ and
+#                     its reference in reference/, one self-contained folder (myst-nb cache:
+#                     unchanged cells are not re-run; the editions share it)
+#   make book-ja      the Japanese edition alone, book/_build/html/ja (after `make book`)
+#   make i18n-update  the catalogs book/locale/ja/LC_MESSAGES/*.po merged with the current
+#                     English pages (msgmerge --previous: a translator sees what changed)
+#   make i18n-status  fails unless every current message is translated, none fuzzy, and each
+#                     translation keeps its roles, references, glue keys and formulas
 #   make book-strict  the same from clean, every notebook re-executed (what CI checks)
 #   make docs         API/reference site in docs/_build/html
 #   make notebooks    classroom notebooks, notebooks/student and notebooks/instructor, each with
@@ -31,7 +37,7 @@ export PATH := $(CURDIR)/$(VENV)/bin:$(PATH)
 # Opt in to Jupyter's platformdirs layout now, which also silences its migration warning.
 export JUPYTER_PLATFORM_DIRS := 1
 
-.PHONY: venv book book-strict book-student docs notebooks nbgrader pdf bench test test-fast lint clean
+.PHONY: venv reference book book-ja book-strict gettext i18n-update i18n-status book-student docs notebooks nbgrader pdf bench test test-fast lint clean
 
 venv: $(STAMP)
 
@@ -48,13 +54,37 @@ $(STAMP): pyproject.toml
 # a web server or zipped as it is. The doctrees are kept out of it, in book/_build/doctrees.
 DOCTREES := book/_build/doctrees
 
-book: $(STAMP)
+# The Japanese edition (book/_ext/i18n.py) is the same pages with book/locale's catalogs, in
+# the site's ja/ folder: it executes nothing (the English build filled the cache) and links
+# the same reference, one folder up.
+JA := -D language=ja -D reference_site=../reference
+
+reference: $(STAMP)
 	$(SPHINX) -d $(DOCTREES)/reference -b html docs book/_build/html/reference
+
+book: reference
 	$(SPHINX) -d $(DOCTREES)/book -b html book book/_build/html
+	$(SPHINX) -d $(DOCTREES)/book-ja $(JA) -b html book book/_build/html/ja
+
+book-ja: reference
+	$(SPHINX) -d $(DOCTREES)/book-ja $(JA) -b html book book/_build/html/ja
 
 book-strict: $(STAMP)
 	$(SPHINX) -E -d $(DOCTREES)/reference -b html docs book/_build/html/reference
 	$(SPHINX) -E -d $(DOCTREES)/book -D nb_execution_mode=force -b html book book/_build/html
+	$(SPHINX) -E -d $(DOCTREES)/book-ja $(JA) -b html book book/_build/html/ja
+
+# The messages of the current English pages, book/_build/gettext/<page>.pot (on the shared
+# execution cache: figure captions exist only in executed pages).
+gettext: reference
+	$(SPHINX) -d $(DOCTREES)/gettext -D reference_site=../html/reference -b gettext \
+	  book book/_build/gettext
+
+i18n-update: gettext
+	$(PY) -m tools.i18n.update book/_build/gettext book/locale ja
+
+i18n-status: gettext
+	$(PY) -m tools.i18n.status book/_build/gettext book/locale ja
 
 # The reference site alone.
 docs: $(STAMP)
@@ -71,6 +101,8 @@ notebooks: $(STAMP)
 book-student: $(STAMP)
 	$(SPHINX) -d $(DOCTREES)/student-reference -b html docs book/_build/student/html/reference
 	$(SPHINX) -d $(DOCTREES)/student -D hide_solutions=1 -b html book book/_build/student/html
+	$(SPHINX) -d $(DOCTREES)/student-ja -D hide_solutions=1 $(JA) -b html book \
+	  book/_build/student/html/ja
 
 # The course folder for nbgrader (tools/classroom/nbgrader.py): nbgrader_config.py and
 # source/<assignment>/, made from the instructor notebooks that `make book` exports.

@@ -19,6 +19,9 @@ _HERE = Path(__file__).resolve().parent
 sys.path[:0] = [str(_HERE / "_ext"), str(_HERE.parent)]
 extensions = [
     "myst_nb",
+    # book/_ext/i18n.py: the Japanese edition from book/locale (its parser replaces
+    # myst-nb's, so it comes after it; its exercise catalog is read before sphinx-exercise's).
+    "i18n",
     "sphinx_proof",
     "sphinx_exercise",
     "sphinx_togglebutton",
@@ -92,6 +95,18 @@ copybutton_selector = "div:not(.output) > div.highlight pre"
 
 exclude_patterns = ["_build", "**.ipynb_checkpoints", "Thumbs.db", ".DS_Store", "jupyter_execute"]
 
+# --- Translations (book/_ext/i18n.py) ----------------------------------------------------
+# `make book-ja`: sphinx-build -D language=ja into <site>/ja. One catalog per page, messages
+# with their source lines (a translator sees the English in context).
+language = "en"
+locale_dirs = ["locale"]
+gettext_compact = False
+gettext_uuid = False
+gettext_last_translator = "elliptic-pendulum contributors"
+# The gettext builder renders outputs by its own MIME priority, without images, so the alt
+# texts of figures would not reach the catalogs.
+nb_mime_priority_overrides = [("gettext", "image/svg+xml", 1), ("gettext", "image/png", 2)]
+
 # --- HTML -------------------------------------------------------------------------------
 html_theme = "sphinx_book_theme"
 html_title = "The simple pendulum and elliptic functions"
@@ -109,6 +124,8 @@ html_theme_options = {
     # the network, and the book must work offline.
     "use_download_button": True,
     "use_fullscreen_button": False,
+    # The language switch (_templates/language-switch.html) before the theme's buttons.
+    "article_header_end": ["language-switch.html", "article-header-buttons.html"],
 }
 html_last_updated_fmt = None
 # Wide formulas scroll in their own block on a phone; see the comments in the files.

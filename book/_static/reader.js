@@ -19,3 +19,16 @@
   });
   window.addEventListener("resize", mark);
 })();
+
+// The language switch (_templates/language-switch.html) goes to the same place of the same
+// page: the anchor in the address, or the section being read, whose id is the same in every
+// edition.
+(function () {
+  "use strict";
+  document.addEventListener("click", function (event) {
+    var link = event.target.closest && event.target.closest("a.language-switch__link");
+    if (link && window.location.hash) {
+      link.href = link.href.split("#")[0] + window.location.hash;
+    }
+  });
+})();
