@@ -13,6 +13,8 @@ import re
 import subprocess
 import sys
 import time
+from collections.abc import Iterator
+from concurrent.futures import Future, ThreadPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -43,7 +45,8 @@ class Build:
 
 
 def sphinx_build(
-    source: Path, outdir: Path, *extra: str, env: dict[str, str] | None = None
+    source: Path, outdir: Path, *extra: str, env: dict[str, str] | None = None,
+    builder: str = "html",
 ) -> Build:
     """Run ``sphinx-build -n -W --keep-going -E`` (plus ``extra``) in a subprocess."""
     cmd = [
@@ -56,7 +59,7 @@ def sphinx_build(
         "-E",
         *extra,
         "-b",
-        "html",
+        builder,
         str(source),
         str(outdir),
     ]
@@ -84,6 +87,18 @@ def reference_build(site: Path) -> Build:
 def book_site_build(site: Path, *extra: str) -> Build:
     """The book built from clean into ``<site>/html``, around its reference (built first)."""
     return sphinx_build(BOOK, site / "html", "-d", str(site / "doctrees" / "book"), *extra)
+
+
+# The Japanese edition (book/_ext/i18n.py), as `make book` builds it: the same pages with
+# book/locale's catalogs, in the site's ja/ folder, around the site's reference one folder up.
+JAPANESE = ("-D", "language=ja", "-D", "reference_site=../reference")
+
+
+def japanese_build(site: Path, name: str, *extra: str) -> Build:
+    """The Japanese edition of a site built from clean into ``<site>/html/ja``."""
+    return sphinx_build(
+        BOOK, site / "html" / "ja", "-d", str(site / "doctrees" / name), *JAPANESE, *extra
+    )
 
 
 _TIMINGS: list[str] = []
@@ -138,20 +153,72 @@ def docs_build(site_folder: Path) -> Build:
 
 
 @pytest.fixture(scope="session")
-def student_book(
-    tmp_path_factory: pytest.TempPathFactory, book_build: Build, execution_cache: Path
-) -> Build:
-    """The student site as `make book-student` builds it: its own reference first, in
-    ``html/reference``, then the book without solutions around it, from the cache the book
-    build filled (the student pages execute whole; book/_ext/classroom.py removes the
-    solutions after)."""
-    site = tmp_path_factory.mktemp("student")
-    reference = reference_build(site)
+def after_book(
+    tmp_path_factory: pytest.TempPathFactory, site_folder: Path, book_build: Build,
+    execution_cache: Path,
+) -> Iterator[dict[str, Future]]:
+    """The builds that read the cache the book build filled, started together once it is
+    done, in two chains at once (a Sphinx build uses one core; the machine has two):
+
+    * "editions": the Japanese edition, in the book site's ja/ (`make book`), then the
+      gettext builder's templates of the current pages (`make i18n-status`);
+    * "students": the student site as `make book-student` builds it, its own reference first,
+      in ``html/reference``, then the book without solutions around it (the student pages
+      execute whole from the cache; book/_ext/classroom.py removes the solutions after), then
+      its Japanese edition in ``html/ja``.
+
+    None of them executes a cell the book build ran: every edition shows the same numbers.
+    """
+    cache = ("-D", f"nb_execution_cache_path={execution_cache}")
+    student = tmp_path_factory.mktemp("student")
+    gettext = tmp_path_factory.mktemp("gettext")
+
+    def editions() -> tuple[Build, Build]:
+        japanese = japanese_build(site_folder, "book-ja", *cache)
+        pot = sphinx_build(
+            BOOK, gettext / "pot", "-d", str(gettext / "doctrees"),
+            "-D", f"reference_site={site_folder / 'html' / 'reference'}", *cache,
+            builder="gettext",
+        )
+        return japanese, pot
+
+    def students() -> tuple[Build, Build, Build]:
+        reference = reference_build(student)
+        if reference.returncode != 0:
+            return reference, reference, reference
+        book = book_site_build(student, "-D", "hide_solutions=1", *cache)
+        japanese = japanese_build(student, "student-ja", "-D", "hide_solutions=1", *cache)
+        return reference, book, japanese
+
+    with ThreadPoolExecutor(max_workers=2) as pool:
+        yield {"editions": pool.submit(editions), "students": pool.submit(students)}
+
+
+@pytest.fixture(scope="session")
+def book_ja_build(after_book: dict[str, Future]) -> Build:
+    """The Japanese edition inside the book's site (see after_book)."""
+    return after_book["editions"].result()[0]
+
+
+@pytest.fixture(scope="session")
+def gettext_build(after_book: dict[str, Future]) -> Build:
+    """The gettext builder's templates of the current pages (see after_book)."""
+    return after_book["editions"].result()[1]
+
+
+@pytest.fixture(scope="session")
+def student_book(after_book: dict[str, Future]) -> Build:
+    """The student site (see after_book)."""
+    reference, book, _ = after_book["students"].result()
     if reference.returncode != 0:
         pytest.fail("the student site's reference did not build:\n" + reference.output[-3000:])
-    return book_site_build(
-        site, "-D", "hide_solutions=1", "-D", f"nb_execution_cache_path={execution_cache}"
-    )
+    return book
+
+
+@pytest.fixture(scope="session")
+def student_ja_build(after_book: dict[str, Future]) -> Build:
+    """The student site's Japanese edition, in its ja/ folder (see after_book)."""
+    return after_book["students"].result()[2]
 
 
 @pytest.fixture(scope="session")

@@ -118,7 +118,9 @@ class Untranslatable(SphinxTransform):
             if "cell_output" not in output.get("classes", []):
                 continue
             for node in output.findall(nodes.TextElement):
-                if not _in_caption(node, output):
+                # Inline nodes are never messages, and Sphinx's RemoveTranslatableInline
+                # unwraps every inline that has the key at all (a link would lose its text).
+                if not isinstance(node, nodes.Inline) and not _in_caption(node, output):
                     node["translatable"] = False
 
 

@@ -47,6 +47,7 @@ import os
 import subprocess
 import time
 from collections.abc import Iterator
+from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 import pytest
@@ -357,8 +358,9 @@ def pages(html_dir: Path, *besides: str) -> list[Path]:
 # The book site holds the reference in reference/ (`make book`); it is looked at as "docs".
 # The student site is the book's pages without the solutions, from the same sources,
 # templates and style sheets: not looked at a second time (that would double the survey).
-BESIDES = {"book": ("reference",), "docs": ()}
-SITES = ("book", "docs")
+# The Japanese edition, in the book's ja/ folder, is looked at as "ja".
+BESIDES = {"book": ("reference", "ja"), "ja": (), "docs": ()}
+SITES = ("book", "ja", "docs")
 
 
 def look_at(
@@ -433,8 +435,15 @@ def look_at(
 
 
 @pytest.fixture(scope="module")
-def folders(built_book: Path, built_docs: Path) -> dict[str, Path]:
-    return {"book": built_book, "docs": built_docs}
+def folders(built_book: Path, built_docs: Path, book_ja_build) -> dict[str, Path]:
+    if book_ja_build.returncode != 0:
+        pytest.fail("the Japanese edition did not build; see test_japanese", pytrace=False)
+    return {"book": built_book, "ja": book_ja_build.outdir, "docs": built_docs}
+
+
+# Two browsers at once, one (site, width) each: the survey is most of this tier's time,
+# and a browser spends much of it waiting (page loads, MathJax), so the two cores share it.
+PARALLEL = 2
 
 
 @pytest.fixture(scope="module")
@@ -442,17 +451,21 @@ def survey(
     folders: dict[str, Path], chromium: str, axe_script: str, tmp_path_factory, request
 ) -> dict:
     """(site, width) -> {page: what the browser saw}, for every page of the three sites."""
-    browser = Browser(chromium, tmp_path_factory.mktemp("chromium-profile"))
-    found, seconds = {}, {}
-    try:
-        for site in SITES:
-            for width in WIDTHS:
-                start = time.perf_counter()
-                found[site, width] = dict(look_at(browser, folders[site], width,
-                                                  BESIDES[site], axe_script))
-                seconds[site, width] = time.perf_counter() - start
-    finally:
-        browser.close()
+
+    def visit(site: str, width: int) -> tuple[dict, float]:
+        browser = Browser(chromium, tmp_path_factory.mktemp("chromium-profile"))
+        start = time.perf_counter()
+        try:
+            return (dict(look_at(browser, folders[site], width, BESIDES[site], axe_script)),
+                    time.perf_counter() - start)
+        finally:
+            browser.close()
+
+    keys = [(site, width) for site in SITES for width in WIDTHS]
+    with ThreadPoolExecutor(max_workers=PARALLEL) as pool:
+        results = dict(zip(keys, pool.map(lambda key: visit(*key), keys), strict=True))
+    found = {key: results[key][0] for key in keys}
+    seconds = {key: results[key][1] for key in keys}
     # What the survey costs, per site and width (the CI budget is counted in minutes).
     SUMMARY["accessibility"] = [f"{line}; {seconds[key]:.0f} s"
                                 for key, line in zip(found, axe_counts(found), strict=True)]
@@ -505,9 +518,10 @@ def test_no_mathjax_errors(survey: dict) -> None:
     assert each(survey, "merrors") == {}
 
 
-def test_equation_numbers_are_the_notes_1_to_46(survey: dict) -> None:
+@pytest.mark.parametrize("site", ["book", "ja"])
+def test_equation_numbers_are_the_notes_1_to_46(survey: dict, site: str) -> None:
     found: dict[str, list[str]] = {}
-    for page, seen in survey[("book", 1280)].items():
+    for page, seen in survey[(site, 1280)].items():
         for number in seen["numbers"]:
             found.setdefault(number, []).append(page)
     twice = {n: p for n, p in found.items() if len(p) > 1}
@@ -580,8 +594,9 @@ def test_axe_reports_violations(chromium: str, axe_script: str, tmp_path: Path) 
     assert found["flawed"]["failed"] == found["mended"]["failed"] == []
 
 
-def test_the_animation_works_from_the_keyboard(survey: dict) -> None:
-    controls = survey[("book", 1280)]["in_motion.html"]["player"]
+@pytest.mark.parametrize("site", ["book", "ja"])
+def test_the_animation_works_from_the_keyboard(survey: dict, site: str) -> None:
+    controls = survey[(site, 1280)]["in_motion.html"]["player"]
     # matplotlib's player: nine buttons, the frame slider, three loop modes, each of which
     # must take the focus (tabIndex 0: reached with Tab) and have a name.
     assert controls is not None and len(controls) >= 10, controls

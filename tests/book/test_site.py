@@ -157,11 +157,14 @@ def _site(build: Build) -> Path:
 
 
 @pytest.fixture(scope="module")
-def copies(book_build: Build, student_book: Build, tmp_path_factory) -> dict[str, tuple]:
-    """site -> (the copy, the folder it was built in): each site copied alone."""
+def copies(book_build: Build, student_book: Build, book_ja_build: Build,
+           student_ja_build: Build, tmp_path_factory) -> dict[str, tuple]:
+    """site -> (the copy, the folder it was built in): each site copied alone, with its
+    Japanese edition in ja/ (the language switch links the two)."""
     found = {}
     for name, build in (("book", book_build), ("student", student_book)):
         built = _site(build)
+        _site(book_ja_build if name == "book" else student_ja_build)
         copy = tmp_path_factory.mktemp(f"copied-{name}") / "site"
         # The browser test leaves its screenshots in the build: not part of the site.
         shutil.copytree(built, copy, ignore=shutil.ignore_patterns("_screenshots"))

@@ -1,0 +1,162 @@
+"""The Japanese edition (book/_ext/i18n.py, book/locale/ja): built strictly from the same
+pages and the same execution as the English, complete, and linked with it page by page.
+
+The browser checks (MathJax, the 46 equation numbers, nothing cut off, axe-core) look at it
+in test_browser.py, the link check and the search in test_site.py.
+"""
+
+from __future__ import annotations
+
+import re
+import subprocess
+import sys
+from collections import Counter
+from html.parser import HTMLParser
+from pathlib import Path
+
+import pytest
+
+from tests.conftest import BOOK, ROOT, Build
+
+JAPANESE_CHAR = re.compile(r"[\u3040-\u30ff\u4e00-\u9fff]")
+LETTER = re.compile(r"[A-Za-z\u3040-\u30ff\u4e00-\u9fff]")
+
+
+def _ok(build: Build) -> Path:
+    if build.returncode != 0:
+        pytest.fail("the Japanese edition did not build:\n" + build.output[-3000:],
+                    pytrace=False)
+    return build.outdir
+
+
+def book_pages(site: Path) -> list[str]:
+    """The English book's pages (the reference and the Japanese edition aside)."""
+    skip = {"_static", "_sources", "_images", "_screenshots", "reference", "ja", "classroom"}
+    return [str(p.relative_to(site)) for p in sorted(site.rglob("*.html"))
+            if not skip & set(p.relative_to(site).parts)]
+
+
+class _Text(HTMLParser):
+    """The text of a page's article, with what is the same in every language apart: math,
+    code, cell outputs; and the glued values and the outputs on their own."""
+
+    SAME = {"pre", "code", "script", "style", "mjx-container"}
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.prose: list[str] = []
+        self.pasted: list[str] = []
+        self.outputs: list[str] = []
+        self._stack: list[tuple[str, str]] = []
+
+    def handle_starttag(self, tag: str, attrs: list[tuple[str, str | None]]) -> None:
+        if tag in {"br", "img", "meta", "link", "input", "hr"}:
+            return
+        classes = dict(attrs).get("class") or ""
+        self._stack.append((tag, classes))
+
+    def handle_endtag(self, tag: str) -> None:
+        while self._stack:
+            if self._stack.pop()[0] == tag:
+                break
+
+    def handle_data(self, data: str) -> None:
+        classes = " ".join(c for _, c in self._stack)
+        tags = {t for t, _ in self._stack}
+        if "bd-article" not in classes and "article" not in tags:
+            return
+        if "pasted-text" in classes:
+            self.pasted.append(data.strip())
+        elif "cell_output" in classes:
+            if data.strip():
+                self.outputs.append(data.strip())
+        elif not (tags & self.SAME or "math" in classes.split()):
+            self.prose.append(data)
+
+
+def read(path: Path) -> _Text:
+    parser = _Text()
+    parser.feed(path.read_text(encoding="utf-8"))
+    return parser
+
+
+def test_the_japanese_edition_builds_strictly_and_executes_nothing(book_ja_build: Build) -> None:
+    _ok(book_ja_build)
+    assert book_ja_build.warnings == []
+    # Every page came from the English build's execution cache: one run, one set of numbers.
+    assert "Executing notebook" not in book_ja_build.output
+
+
+def test_the_student_edition_in_japanese_builds_strictly(student_ja_build: Build) -> None:
+    site = _ok(student_ja_build)
+    assert student_ja_build.warnings == []
+    assert "Executing notebook" not in student_ja_build.output
+    assert "の解答" not in (site / "energy.html").read_text(encoding="utf-8")
+
+
+def test_every_page_has_its_japanese_page_and_they_link_each_other(
+    built_book: Path, book_ja_build: Build
+) -> None:
+    ja = _ok(book_ja_build)
+    pages = book_pages(built_book)
+    assert len(pages) >= 20
+    for page in pages:
+        english = (built_book / page).read_text(encoding="utf-8")
+        japanese = (ja / page).read_text(encoding="utf-8")
+        assert '<html lang="ja"' in japanese and '<html lang="en"' in english, page
+        up = "../" * page.count("/")
+        for html, lang, href in ((english, "ja", f"{up}ja/{page}"),
+                                 (japanese, "en", f"{up}../{page}")):
+            assert f'<link rel="alternate" hreflang="{lang}" href="{href}"' in html, page
+            assert re.search(rf'class="[^"]*language-switch__link[^"]*" href="{re.escape(href)}"'
+                             rf' hreflang="{lang}"', html), page
+
+
+def test_both_editions_show_the_same_numbers(built_book: Path, book_ja_build: Build) -> None:
+    # The glued values of the text and the cell outputs, page by page: the Japanese pages
+    # must show exactly the English build's (their order may differ with the sentences).
+    ja = _ok(book_ja_build)
+    pasted = 0
+    for page in book_pages(built_book):
+        english, japanese = read(built_book / page), read(ja / page)
+        assert Counter(japanese.pasted) == Counter(english.pasted), page
+        assert Counter(japanese.outputs) == Counter(english.outputs), page
+        pasted += len(english.pasted)
+    assert pasted > 200
+
+
+def test_every_page_reads_in_japanese(built_book: Path, book_ja_build: Build) -> None:
+    # The prose of each page (math, code, outputs aside): mostly Japanese characters, and
+    # no English paragraph left (an untranslated or fuzzy message shows the English).
+    ja = _ok(book_ja_build)
+    shares = {}
+    for page in book_pages(built_book):
+        text = "".join(read(ja / page).prose)
+        letters = LETTER.findall(text)
+        shares[page] = len(JAPANESE_CHAR.findall(text)) / max(len(letters), 1)
+    print({page: round(share, 2) for page, share in shares.items()})
+    # The glossary's English column and the reference list are English by design.
+    low = {page: share for page, share in shares.items() if share < 0.6
+           and page not in {"glossary.html", "references.html"}}
+    assert low == {}
+
+
+def test_interface_strings_are_japanese(book_ja_build: Build) -> None:
+    html = (_ok(book_ja_build) / "energy.html").read_text(encoding="utf-8")
+    assert "の解答" in html and "Solution to" not in html  # sphinx-exercise's, reordered
+    assert "コードを表示" in html  # myst-nb's code-cell toggle
+    assert "本書を検索" in html  # the theme's search box
+    assert ">図 " in html and ">演習 " in html
+
+
+def test_every_message_is_translated_and_whole(gettext_build: Build) -> None:
+    # `make i18n-status`: the gettext builder's templates of the current pages against the
+    # catalogs (tools/i18n/status.py), built on this session's execution cache.
+    build = gettext_build
+    assert build.returncode == 0 and build.warnings == [], build.output[-3000:]
+    assert "Executing notebook" not in build.output
+    status = subprocess.run(
+        [sys.executable, "-m", "tools.i18n.status", str(build.outdir), str(BOOK / "locale"),
+         "ja"], cwd=ROOT, capture_output=True, text=True)
+    print(status.stdout[-3000:])
+    assert status.returncode == 0, status.stdout[-5000:]
