@@ -35,6 +35,7 @@ from pathlib import Path
 from typing import Any
 
 from docutils import nodes
+from i18n import label
 from sphinx.application import Sphinx
 from sphinx.config import Config
 from sphinx.errors import ConfigError
@@ -138,26 +139,30 @@ def _download_buttons(
     if pagename not in files:
         return
     up = "../" * pagename.count("/")
+
+    def t(text: str) -> str:  # the menu in the edition's language (book/_ext/i18n.py)
+        return label(app.config.language, text)
+
     buttons = [
         {"type": "link", "url": f"{up}{FOLDER}/student/{files[pagename]}",
-         "text": "notebook", "icon": "fas fa-book-open",
-         "tooltip": "Download this chapter as a Jupyter notebook (student edition)",
+         "text": t("notebook"), "icon": "fas fa-book-open",
+         "tooltip": t("Download this chapter as a Jupyter notebook (student edition)"),
          "label": "download-student-notebook-button"},
         {"type": "link", "url": f"{up}{FOLDER}/{ZIP_NAME}-student.zip",
-         "text": "all notebooks", "icon": "fas fa-file-archive",
-         "tooltip": "Download every chapter's student notebook (zip)",
+         "text": t("all notebooks"), "icon": "fas fa-file-archive",
+         "tooltip": t("Download every chapter's student notebook (zip)"),
          "label": "download-student-zip-button"},
     ]
     if "instructor" in _editions(app):
         buttons += [
             {"type": "link", "url": f"{up}{FOLDER}/instructor/{files[pagename]}",
-             "text": "notebook (instructor)", "icon": "fas fa-book",
-             "tooltip": "Download this chapter's notebook with its solutions (instructor "
-                        "edition)",
+             "text": t("notebook (instructor)"), "icon": "fas fa-book",
+             "tooltip": t("Download this chapter's notebook with its solutions (instructor "
+                          "edition)"),
              "label": "download-instructor-notebook-button"},
             {"type": "link", "url": f"{up}{FOLDER}/{ZIP_NAME}-instructor.zip",
-             "text": "all notebooks (instructor)", "icon": "fas fa-file-archive",
-             "tooltip": "Download every chapter's notebook with its solutions (zip)",
+             "text": t("all notebooks (instructor)"), "icon": "fas fa-file-archive",
+             "tooltip": t("Download every chapter's notebook with its solutions (zip)"),
              "label": "download-instructor-zip-button"},
         ]
     for group in context.get("header_buttons", []):
@@ -166,7 +171,7 @@ def _download_buttons(
             break
     else:
         context.setdefault("header_buttons", []).append(
-            {"type": "group", "tooltip": "Download this page", "icon": "fas fa-download",
+            {"type": "group", "tooltip": t("Download this page"), "icon": "fas fa-download",
              "buttons": buttons, "label": "download-buttons"}
         )
 

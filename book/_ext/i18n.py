@@ -55,6 +55,32 @@ INTERFACE = {
 }
 
 
+# Our own strings written from Python (the download menu of book/_ext/classroom.py), which no
+# template catalog reaches.
+LABELS = {
+    "ja": {
+        "notebook": "ノートブック",
+        "all notebooks": "全ノートブック",
+        "notebook (instructor)": "ノートブック（教員用）",
+        "all notebooks (instructor)": "全ノートブック（教員用）",
+        "Download this chapter as a Jupyter notebook (student edition)":
+            "この章を Jupyter ノートブックとしてダウンロード（学生用）",
+        "Download every chapter's student notebook (zip)":
+            "全章の学生用ノートブックをダウンロード（zip）",
+        "Download this chapter's notebook with its solutions (instructor edition)":
+            "この章のノートブックを解答付きでダウンロード（教員用）",
+        "Download every chapter's notebook with its solutions (zip)":
+            "全章のノートブックを解答付きでダウンロード（zip）",
+        "Download this page": "このページをダウンロード",
+    },
+}
+
+
+def label(language: str | None, text: str) -> str:
+    """``text`` in ``language`` when LABELS has it, else as it is (English)."""
+    return LABELS.get(language or "en", {}).get(text, text)
+
+
 class _KeepRenderer(dict):  # type: ignore[type-arg]
     """A document's attributes that remember the notebook renderer.
 
