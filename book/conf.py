@@ -22,6 +22,8 @@ extensions = [
     # book/_ext/i18n.py: the Japanese edition from book/locale (its parser replaces
     # myst-nb's, so it comes after it; its exercise catalog is read before sphinx-exercise's).
     "i18n",
+    # book/_ext/ja_search.py: Japanese search queries split into words as the index is.
+    "ja_search",
     "sphinx_proof",
     "sphinx_exercise",
     "sphinx_togglebutton",

@@ -25,8 +25,7 @@ Where the expectations come from: the index is written by Sphinx's own Python in
 An English build with the extension gets the same ``language_data.js`` and ``searchtools.js``
 as one without it.
 
-The test takes a few seconds (three small builds, node runs); it has no ``slow`` mark of its
-own, but tests/book/conftest.py marks every test of this folder ``slow``.
+The test takes a few seconds (three small builds, node runs): part of the quick tier.
 """
 
 from __future__ import annotations
