@@ -29,11 +29,22 @@ def _ok(build: Build) -> Path:
     return build.outdir
 
 
+# Pages that Sphinx and its extensions generate, with little or no prose of ours.
+GENERATED = {"genindex.html", "search.html", "prf-prf.html"}
+# Typography that docutils applies to English text only (its smart quotes: Sphinx leaves
+# them out for Japanese), undone before outputs are compared.
+TYPOGRAPHY = str.maketrans({"\u2019": "'", "\u2018": "'", "\u201c": '"', "\u201d": '"'})
+
+
 def book_pages(site: Path) -> list[str]:
     """The English book's pages (the reference and the Japanese edition aside)."""
     skip = {"_static", "_sources", "_images", "_screenshots", "reference", "ja", "classroom"}
     return [str(p.relative_to(site)) for p in sorted(site.rglob("*.html"))
             if not skip & set(p.relative_to(site).parts)]
+
+
+def plain(texts: list[str]) -> Counter[str]:
+    return Counter(t.translate(TYPOGRAPHY).replace("\u2026", "...") for t in texts)
 
 
 class _Text(HTMLParser):
@@ -67,7 +78,8 @@ class _Text(HTMLParser):
             return
         if "pasted-text" in classes:
             self.pasted.append(data.strip())
-        elif "cell_output" in classes:
+        elif "cell_output" in classes and not tags & {"figcaption", "caption", "a"}:
+            # (captions are translated, and so are the titles of pages an output links to)
             if data.strip():
                 self.outputs.append(data.strip())
         elif not (tags & self.SAME or "math" in classes.split()):
@@ -119,8 +131,8 @@ def test_both_editions_show_the_same_numbers(built_book: Path, book_ja_build: Bu
     pasted = 0
     for page in book_pages(built_book):
         english, japanese = read(built_book / page), read(ja / page)
-        assert Counter(japanese.pasted) == Counter(english.pasted), page
-        assert Counter(japanese.outputs) == Counter(english.outputs), page
+        assert plain(japanese.pasted) == plain(english.pasted), page
+        assert plain(japanese.outputs) == plain(english.outputs), page
         pasted += len(english.pasted)
     assert pasted > 200
 
@@ -130,7 +142,7 @@ def test_every_page_reads_in_japanese(built_book: Path, book_ja_build: Build) ->
     # no English paragraph left (an untranslated or fuzzy message shows the English).
     ja = _ok(book_ja_build)
     shares = {}
-    for page in book_pages(built_book):
+    for page in sorted(set(book_pages(built_book)) - GENERATED):
         text = "".join(read(ja / page).prose)
         letters = LETTER.findall(text)
         shares[page] = len(JAPANESE_CHAR.findall(text)) / max(len(letters), 1)
