@@ -29,6 +29,7 @@ here:
 
 from __future__ import annotations
 
+import shutil
 from pathlib import Path
 from typing import Any
 
@@ -233,6 +234,21 @@ def _compile_own_catalogs(language: str) -> None:
                 write_mo(out, catalog)
 
 
+def _drop_executed_notebooks(app: Sphinx, exception: BaseException | None) -> None:
+    """Remove the executed notebooks an edition inside the English site wrote into it.
+
+    myst-nb writes them to ``<outdir>/../jupyter_execute``: for an edition built inside the
+    English site's folder that is inside the site, and the student site's would hold every
+    solution (its pages execute whole). The classroom export (book/_ext/classroom.py, at the
+    default priority) has read them by then.
+    """
+    if app.config.language in (None, "", "en"):
+        return
+    folder = Path(app.outdir).parent / "jupyter_execute"
+    if folder.is_dir() and (Path(app.outdir).parent / "index.html").exists():
+        shutil.rmtree(folder)
+
+
 def setup(app: Sphinx) -> dict[str, Any]:
     """Register the parser, transforms and hooks.
 
@@ -246,4 +262,5 @@ def setup(app: Sphinx) -> dict[str, Any]:
         app.add_message_catalog("exercise", str(LOCALE))
     app.connect("config-inited", _configure)
     app.connect("html-page-context", _language_links)
+    app.connect("build-finished", _drop_executed_notebooks, priority=900)
     return {"parallel_read_safe": True, "parallel_write_safe": True}
