@@ -14,7 +14,8 @@
 #   make notebooks    classroom notebooks, notebooks/student and notebooks/instructor, each with
 #                     the package's wheel, requirements.txt and a README, and zipped
 #   make book-student the student site (no solutions) in book/_build/student/html, likewise
-#   make pdf          book/_build/pdf/book.pdf (solutions open) and book-student.pdf
+#   make pdf          book/_build/pdf/book.pdf (solutions open) and book-student.pdf, and
+#                     the Japanese edition's book-ja.pdf and book-student-ja.pdf
 #   make nbgrader     the nbgrader course folder, book/_build/nbgrader: one assignment per
 #                     chapter with exercises, from the site's instructor notebooks
 #   make bench        speed and accuracy tables
@@ -109,12 +110,12 @@ book-student: $(STAMP)
 nbgrader: book
 	$(PY) -m tools.classroom.nbgrader book/_build/html/classroom/instructor book/_build/nbgrader
 
-# The whole book as one PDF each for instructors (solutions open) and students (none):
-# a single-page build of each, printed by headless Chromium once MathJax is done
-# (tools/pdf). The builds reuse the HTML book's execution cache, so a cell runs again only
-# if its source changed (the student pages, stripped of their solutions, have cells of
-# their own: they run once, then they are cached too), and resolve the library's names in
-# the book's reference; a PDF cannot link to files beside it, so those names print as text.
+# The whole book as one PDF each for instructors (solutions open) and students (none), in
+# English and in Japanese: a single-page build of each, printed by headless Chromium once
+# MathJax is done (tools/pdf). The builds reuse the HTML book's execution cache, so no cell
+# runs again (the student pages are executed whole, and their solutions removed after), and
+# resolve the library's names in the book's reference; a PDF cannot link to files beside
+# it, so those names print as text.
 pdf: book
 	ELLIPTIC_PENDULUM_DOCS_HTML=$(CURDIR)/book/_build/html/reference $(PY) -m tools.pdf \
 	  book book/_build --execution-cache $(CURDIR)/book/_build/.jupyter_cache

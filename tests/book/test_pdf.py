@@ -1,7 +1,9 @@
-"""The book as PDF (tools/pdf, `make pdf`): a single-page build of each edition
-printed by headless Chromium after MathJax. The PDFs are read back with pypdf: every chapter
-title and every equation number of the note is there as text, the figures and formulas were
-drawn, the instructor's copy has every solution open and the student's none.
+"""The book as PDF (tools/pdf, `make pdf`): a single-page build of each edition, English and
+Japanese, printed by headless Chromium after MathJax. The PDFs are read back with pypdf:
+every chapter title (the Japanese ones from book/locale's catalogs) and every equation number
+of the note is there as text, the figures and formulas were drawn, the instructor's copy has
+every solution open and the student's none; the Japanese body is set in a Mincho and its
+headings in a Gothic.
 
 And they are fit to print and to navigate (the PDF issue): a title page with the edition,
 version, date and licences; an outline and tags; page numbers at the foot and in the table
@@ -16,10 +18,14 @@ import importlib.util
 import os
 import re
 import shutil
+import subprocess
+from collections import Counter
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 import pytest
+from babel.messages.pofile import read_po
 
 from tests.conftest import BOOK, Build
 from tools.classroom.labels import scan
@@ -36,17 +42,78 @@ def _need(what: str, ok: bool) -> None:
         pytest.skip(f"{what} is not installed")
 
 
+@dataclass(frozen=True)
+class Edition:
+    """What a PDF of one language must say, from the sources: the chapter titles (the
+    English pages' headings, or their translations in book/locale/ja), and the labels that
+    Sphinx, sphinx-exercise and our catalogs print."""
+
+    language: str
+    chapters: list[str]
+    figure: str  # "Fig. {}"
+    exercise: str
+    solution: str  # a pattern: the heading of a solution
+    contents: str
+    edition: dict[str, str] = field(default_factory=dict)
+    licence: str = ""
+    controls: tuple[str, ...] = ()
+
+    def key(self, text: str) -> str:
+        """Text as compared: English with its runs of space as one, Japanese (whose lines
+        break anywhere, and where pypdf may read a space between two glyph runs) with none."""
+        return re.sub(r"\s+", "" if self.language == "ja" else " ", text).strip()
+
+
+def _translated(page: str, text: str) -> str:
+    with (BOOK / "locale" / "ja" / "LC_MESSAGES" / f"{page}.po").open("rb") as po:
+        message = read_po(po).get(text)
+    assert message is not None and message.string, (page, text)  # make i18n-status holds it
+    return str(message.string)
+
+
+def _editions() -> dict[str, Edition]:
+    titles = scan(BOOK).titles
+    english = Edition(
+        "en", [t for doc, t in titles.items() if doc != "index"], "Fig. {}", "Exercise {}",
+        r"Solution to\s*Exercise \d+", "Contents",
+        {"book": "Instructor edition", "book-student": "Student edition"},
+        "Text and figures: CC BY 4.0; code: MIT",
+        # What the screen shows to click on: myst-nb's toggles of folded cells, the
+        # animation's hint in its caption, sphinx-copybutton's tooltip.
+        ("Show code cell source", "Hide code cell source", "Show code cell content",
+         "Hide code cell content", "press \u25b6 to play", "Copy to clipboard", "Copied!"))
+    # The Japanese labels: book/_ext/i18n.py (the exercise's and the solution's titles, the
+    # code cells' toggles), Sphinx's own catalog (図, 目次), tools/pdf/build.py (the title page).
+    japanese = Edition(
+        "ja", [_translated(doc, t) for doc, t in titles.items() if doc != "index"],
+        "図 {}", "演習 {}", r"演習\s*\d+\s*の解答", "目次",
+        {"book-ja": "教員用（解答付き）", "book-student-ja": "学生用"},
+        "本文と図：CC BY 4.0、コード：MIT",
+        ("コードを表示", "コードを隠す", "\u25b6 を押すと再生", "クリップボードにコピー"))
+    return {"book": english, "book-student": english, "book-ja": japanese,
+            "book-student-ja": japanese}
+
+
+EDITIONS = _editions()
+TEACHERS = {"book": "book-student", "book-ja": "book-student-ja"}
+
+
 @pytest.fixture(scope="session")
 def pdfs(tmp_path_factory: pytest.TempPathFactory, docs_build: Build, book_build: Build,
          execution_cache: Path) -> dict:
     _need("chromium", shutil.which("chromium") is not None or "CHROMIUM" in os.environ)
     _need("pypdf", importlib.util.find_spec("pypdf") is not None)
+    # The Japanese PDFs' faces (Debian's fonts-ipafont-mincho and -gothic, .ci/run).
+    faces = subprocess.run(["fc-list", ":", "family"], capture_output=True, text=True,
+                           check=False).stdout if shutil.which("fc-list") else ""
+    _need("fonts-ipafont-mincho and -gothic", "IPAPMincho" in faces and "IPAPGothic" in faces)
     if docs_build.returncode != 0:
         pytest.fail("the docs did not build (the book links to them)", pytrace=False)
     out = tmp_path_factory.mktemp("pdf")
     # The session's execution cache, which the book build filled: no page runs again.
+    # Two at a time, one per core: the machine has two.
     report = build_pdf.build(BOOK, out, execution_cache,
-                             {"ELLIPTIC_PENDULUM_DOCS_HTML": str(docs_build.outdir)})
+                             {"ELLIPTIC_PENDULUM_DOCS_HTML": str(docs_build.outdir)}, workers=2)
     print({k: {n: round(v, 1) if isinstance(v, float) else v for n, v in r.items()}
            for k, r in report.items()})
     from pypdf import PdfReader
@@ -61,19 +128,55 @@ def pdfs(tmp_path_factory: pytest.TempPathFactory, docs_build: Build, book_build
     return {"report": report, "texts": texts, "readers": readers}
 
 
-def test_both_pdfs_have_a_plausible_length(pdfs: dict) -> None:
-    teacher, student = pdfs["texts"]["book"], pdfs["texts"]["book-student"]
+def test_every_edition_is_printed(pdfs: dict) -> None:
+    # The four of `make pdf`: this module's expectations cover each of them.
+    assert sorted(pdfs["texts"]) == sorted(build_pdf.EDITIONS) == sorted(EDITIONS)
+
+
+def test_the_pdfs_have_a_plausible_length(pdfs: dict) -> None:
     chapters = len(scan(BOOK).pages)
-    # Every chapter starts on a new page and runs over several; the solutions add pages.
-    assert 3 * chapters < len(student) < len(teacher) < 1000
+    for name, student in TEACHERS.items():
+        teacher, pupil = pdfs["texts"][name], pdfs["texts"][student]
+        # Every chapter starts on a new page and runs over several; the solutions add pages.
+        assert 3 * chapters < len(pupil) < len(teacher) < 1000, name
 
 
 def test_chapter_titles_are_text(pdfs: dict) -> None:
-    titles = scan(BOOK).titles
     for name, pages in pdfs["texts"].items():
-        text = re.sub(r"\s+", " ", " ".join(pages))
-        missing = [t for t in titles.values() if re.sub(r"\s+", " ", t) not in text]
+        edition = EDITIONS[name]
+        text = edition.key(" ".join(pages))
+        missing = [t for t in edition.chapters if edition.key(t) not in text]
         assert missing == [], (name, missing)
+
+
+def _fonts(reader: Any) -> dict[str, str]:
+    """The text of a PDF drawn in each font (its base name without the subset tag)."""
+    drawn: dict[str, list[str]] = {}
+    for page in reader.pages:
+        def visit(text: str, cm: Any, tm: Any, font: Any, size: Any) -> None:
+            if font is not None and text.strip():
+                name = str(font.get("/BaseFont", "")).lstrip("/").split("+")[-1]
+                drawn.setdefault(name, []).append(text)
+        page.extract_text(visitor_text=visit)
+    return {name: "".join(texts) for name, texts in drawn.items()}
+
+
+def test_japanese_body_is_mincho_and_headings_gothic(pdfs: dict) -> None:
+    # The print stylesheet (book/_ext/static/classroom_print.css): IPA P Mincho for the
+    # body, IPA P Gothic for the headings. Without it Chromium sets Japanese in its
+    # default sans-serif (the Gothic, or a Noto face) and there is no Mincho at all.
+    for name in ("book-ja", "book-student-ja"):
+        edition = EDITIONS[name]
+        fonts = {f: edition.key(text) for f, text in _fonts(pdfs["readers"][name]).items()}
+        sizes = Counter({f: len(text) for f, text in fonts.items()})
+        mincho = sum(n for f, n in sizes.items() if "Mincho" in f)
+        assert mincho > 0.5 * sum(sizes.values()), (name, sizes.most_common(8))
+        gothic = "".join(text for f, text in fonts.items() if "Gothic" in f)
+        plain = [t for t in edition.chapters if edition.key(t) not in gothic]
+        assert plain == [], (name, plain, sizes.most_common(8))
+    for name in ("book", "book-student"):  # (the note's Japanese title is in a Gothic)
+        fonts = _fonts(pdfs["readers"][name])
+        assert not any("Mincho" in f for f in fonts), (name, list(fonts))
 
 
 def _tags() -> set[str]:
@@ -103,19 +206,27 @@ def test_formulas_and_figures_were_drawn(pdfs: dict) -> None:
         assert seen["formulas"] > 500, (name, seen)  # MathJax typeset the whole book
         assert seen["images"] > 5, (name, seen)  # and print_pdf refuses an image not loaded
     figures = {t.number for t in scan(BOOK).targets.values() if t.kind == "figure" and t.number}
-    text = "\n".join(pdfs["texts"]["book"])
-    assert {n for n in figures if f"Fig. {n}" in text} == figures
+    for name in TEACHERS:
+        edition = EDITIONS[name]
+        text = edition.key("\n".join(pdfs["texts"][name]))
+        labels = {n for n in figures if edition.key(edition.figure.format(n)) in text}
+        assert labels == figures, name
 
 
 def test_solutions_open_for_instructors_absent_for_students(pdfs: dict) -> None:
     exercises = len(scan(BOOK).exercise_numbers)
-    teacher = "\n".join(pdfs["texts"]["book"])
-    student = "\n".join(pdfs["texts"]["book-student"])
-    assert pdfs["report"]["book"]["solutions"] == exercises
-    assert len(re.findall(r"Solution to\s*Exercise \d+", teacher)) == exercises
-    assert "Solution" not in re.sub(r"Solutions? of", "", student)
-    for number in scan(BOOK).exercise_numbers.values():  # the exercises stay, same numbers
-        assert f"Exercise {number}" in student
+    for name, pupil in TEACHERS.items():
+        edition = EDITIONS[name]
+        teacher = "\n".join(pdfs["texts"][name])
+        student = edition.key("\n".join(pdfs["texts"][pupil]))
+        assert pdfs["report"][name]["solutions"] == exercises, name
+        assert len(re.findall(edition.solution, teacher)) == exercises, name
+        if edition.language == "en":
+            assert "Solution" not in re.sub(r"Solutions? of", "", student)
+        else:  # 解答 is also in the teacher's guide's title and the intro's prose
+            assert not re.search(edition.solution, student), pupil
+        for number in scan(BOOK).exercise_numbers.values():  # the exercises, same numbers
+            assert edition.key(edition.exercise.format(number)) in student, (pupil, number)
 
 
 def test_every_exercise_prints_its_hint_open(pdfs: dict) -> None:
@@ -129,16 +240,16 @@ def test_every_exercise_prints_its_hint_open(pdfs: dict) -> None:
                  if e.written), key=len)
     words = " ".join(plain.split()[:6])
     assert len(words.split()) >= 4, words
-    for name in ("book", "book-student"):
+    for name in pdfs["texts"]:
         assert pdfs["report"][name]["hints"] == exercises, name
+    for name in ("book", "book-student"):  # the hint's words in English
         text = re.sub(r"\s+", " ", " ".join(pdfs["texts"][name]))
         assert words in text, (name, words)
 
 
 # --- Fit to print and to navigate -----------------------------------------------------------
-# The chapters, as the book's toctree lists them: every one starts on a new page, has an
-# entry in the outline and a line with its page in the contents.
-CHAPTERS = [t for doc, t in scan(BOOK).titles.items() if doc != "index"]
+# The chapters, as the book's toctree lists them (Edition.chapters): every one starts on a
+# new page, has an entry in the outline and a line with its page in the contents.
 
 
 def _squash(text: str) -> str:
@@ -164,15 +275,16 @@ def _body(page: str) -> str:
     return "\n".join(lines[:-1]) if lines and lines[-1].strip().isdigit() else page
 
 
-def _contents(pages: list[str]) -> dict[str, int]:
+def _contents(pages: list[str], edition: Edition) -> dict[str, int]:
     """The table of contents as printed: chapter title -> the page number it gives."""
-    start = next(i for i, p in enumerate(pages) if "Contents" in p.splitlines()[:3])
+    start = next(i for i, p in enumerate(pages) if edition.contents in p.splitlines()[:3])
+    chapters = {edition.key(t): t for t in edition.chapters}
     found: dict[str, int] = {}
     for page in pages[start:start + 3]:
         for line in _body(page).splitlines():
-            m = re.fullmatch(r"(.+?)\s+(\d+)", line.strip())
-            if m and m[1] in CHAPTERS:
-                found.setdefault(m[1], int(m[2]))
+            m = re.fullmatch(r"(.+?)\s*?(\d+)", line.strip())
+            if m and edition.key(m[1]) in chapters:
+                found.setdefault(chapters[edition.key(m[1])], int(m[2]))
     return found
 
 
@@ -182,14 +294,15 @@ def test_outline_lists_every_chapter_on_its_page(pdfs: dict) -> None:
     for name, reader in pdfs["readers"].items():
         outline = _outline(reader)
         pages = pdfs["texts"][name]
-        for title in CHAPTERS:
+        edition = EDITIONS[name]
+        for title in edition.chapters:
             # Chromium writes a heading at the top of a page twice into its entry
             # ("ConventionsConventions"): the title is in it.
             # A title on two lines loses its space there ("andelliptic functions").
             at = [page for entry, page, _ in outline
                   if entry.replace(" ", "").startswith(title.replace(" ", ""))]
             assert at, (name, title, [e for e, _, _ in outline][:20])
-            assert title in _squash(pages[at[0] - 1]), (name, title, at[0])
+            assert edition.key(title) in edition.key(pages[at[0] - 1]), (name, title, at[0])
 
 
 def test_pdf_is_tagged(pdfs: dict) -> None:
@@ -214,41 +327,41 @@ def test_contents_give_the_page_of_each_chapter(pdfs: dict) -> None:
     # The printer reads where each chapter landed and writes it into the contents: the
     # number printed beside a title is the page on which that title starts its chapter.
     for name, pages in pdfs["texts"].items():
-        contents = _contents(pages)
-        assert sorted(contents) == sorted(CHAPTERS), (name, set(CHAPTERS) - set(contents))
+        edition = EDITIONS[name]
+        contents = _contents(pages, edition)
+        chapters = edition.chapters
+        assert sorted(contents) == sorted(chapters), (name, set(chapters) - set(contents))
         for title, number in contents.items():
             # The page starts with the title (on one line or two).
-            first = _squash(" ".join(_body(pages[number - 1]).splitlines()[:3]))
-            assert first.startswith(title), (name, title, number, first)
+            first = edition.key(" ".join(_body(pages[number - 1]).splitlines()[:3]))
+            assert first.startswith(edition.key(title)), (name, title, number, first)
         # One heading "Contents" (the theme printed its own and the list's caption).
-        assert sum(p.splitlines().count("Contents") for p in pages) == 1, name
+        assert sum(p.splitlines().count(edition.contents) for p in pages) == 1, name
 
 
 def test_title_page_states_edition_version_date_and_licence(pdfs: dict) -> None:
     # tools/pdf/build.py's title_page; the licences of book/about.md.
     version = importlib.metadata.version("elliptic-pendulum")
-    editions = {"book": "Instructor edition", "book-student": "Student edition"}
+    title = scan(BOOK).titles["index"]
+    titles = {"en": title, "ja": _translated("index", title)}
     for name, pages in pdfs["texts"].items():
-        first = _squash(pages[0])
-        assert "The simple pendulum and elliptic functions" in first, name
-        assert editions[name] in first, (name, first)
-        assert f"elliptic-pendulum {version}" in first, (name, first)
-        assert re.search(r"\b\d{4}-\d{2}-\d{2}\b", first), (name, first)
-        assert "Text and figures: CC BY 4.0; code: MIT" in first, (name, first)
-
-
-# What the screen shows to click on: myst-nb's toggles of folded cells, the animation's
-# player (its hint in the caption, its repetition modes), sphinx-copybutton's tooltip.
-CONTROLS = ["Show code cell source", "Hide code cell source", "Show code cell content",
-            "Hide code cell content", "press \u25b6 to play", "Copy to clipboard", "Copied!"]
+        edition = EDITIONS[name]
+        first = edition.key(pages[0])
+        assert edition.key(titles[edition.language]) in first, name
+        assert edition.key(edition.edition[name]) in first, (name, first)
+        assert edition.key(f"elliptic-pendulum {version}") in first, (name, first)
+        assert re.search(r"\d{4}-\d{2}-\d{2}", first), (name, first)
+        assert edition.key(edition.licence) in first, (name, first)
 
 
 def test_no_screen_controls_are_printed(pdfs: dict) -> None:
     for name, pages in pdfs["texts"].items():
+        edition = EDITIONS[name]
         # The introduction names the toggle in quotes, as text ("the code under “Show
-        # code cell source”"): a quoted name is no control.
-        text = re.sub(r"\u201c[^\u201d]*\u201d", "", _squash(" ".join(pages)))
-        assert [c for c in CONTROLS if c in text] == [], name
+        # code cell source”", 「コードを表示」): a quoted name is no control.
+        text = re.sub(r"\u201c[^\u201d]*\u201d|\u300c[^\u300d]*\u300d", "",
+                      _squash(" ".join(pages)))
+        assert [c for c in edition.controls if edition.key(c) in edition.key(text)] == [], name
         lines = {line.strip() for page in pages for line in page.splitlines()}
         assert not lines & {"Copy", "Once", "Loop", "Reflect", "Once Loop Reflect"}, name
 

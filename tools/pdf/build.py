@@ -1,7 +1,10 @@
-"""Build the book as two PDFs: <build>/pdf/book.pdf (solutions open) and book-student.pdf.
+"""Build the book as PDFs: <build>/pdf/book.pdf (solutions open) and book-student.pdf, and
+the Japanese edition's book-ja.pdf and book-student-ja.pdf.
 
 Each is a Sphinx ``singlehtml`` build of the whole book (the student one with
-``-D hide_solutions=1``, which book/_ext/classroom.py turns into "no solutions at all"),
+``-D hide_solutions=1``, which book/_ext/classroom.py turns into "no solutions at all"; the
+Japanese ones with ``-D language=ja``, book/locale's catalogs, whose print stylesheet sets
+the body in IPA P Mincho and the headings in IPA P Gothic),
 printed by headless Chromium (tools/pdf/printer.py) once MathJax has typeset it. Why Chromium
 and not LaTeX: the tests already need Debian's chromium, the PDF then shows exactly what the
 HTML book shows (myst-nb outputs, MathJax, the figures), and TeX Live would add a large
@@ -21,23 +24,39 @@ import os
 import subprocess
 import sys
 import time
+from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 from .printer import print_pdf
 
-EDITIONS = {"book": (".", [], True), "book-student": ("student", ["-D", "hide_solutions=1"], False)}
+STUDENT = ["-D", "hide_solutions=1"]
+JAPANESE = ["-D", "language=ja"]
+# name: (build subfolder, sphinx-build options, solutions open, language).
+EDITIONS = {
+    "book": (".", [], True, "en"),
+    "book-student": ("student", STUDENT, False, "en"),
+    "book-ja": ("ja", JAPANESE, True, "ja"),
+    "book-student-ja": ("student-ja", [*STUDENT, *JAPANESE], False, "ja"),
+}
 # The title page says which edition, which version of the library the book was built with
 # (its numbers come from that run), when, and the licences (book/about.md,
-# book/_templates/licence.html).
+# book/_templates/licence.html), in the edition's language.
 EDITION_NAMES = {"book": "Instructor edition, with the solutions",
-                 "book-student": "Student edition"}
-LICENCE = "Text and figures: CC BY 4.0; code: MIT"
+                 "book-student": "Student edition",
+                 "book-ja": "教員用（解答付き）",
+                 "book-student-ja": "学生用"}
+LICENCE = {"en": "Text and figures: CC BY 4.0; code: MIT",
+           "ja": "本文と図：CC BY 4.0、コード：MIT"}
+# The copyright line as book/about.md has it (the Japanese edition keeps it as it is).
+COPYRIGHT = {"en": "\u00a9 2024-2026 elliptic-pendulum contributors. {licence}.",
+             "ja": "\u00a9 2024-2026 elliptic-pendulum contributors. {licence}"}
 
 
 def title_page(name: str, today: datetime.date | None = None) -> list[tuple[str, str]]:
     """The lines under the title on the PDF's first page, (CSS class, text).
 
     The date is today's, or SOURCE_DATE_EPOCH's (reproducible builds) if it is set."""
+    language = EDITIONS[name][3]
     if today is None:
         epoch = os.environ.get("SOURCE_DATE_EPOCH")
         today = (datetime.datetime.fromtimestamp(int(epoch), datetime.UTC).date() if epoch
@@ -49,20 +68,25 @@ def title_page(name: str, today: datetime.date | None = None) -> list[tuple[str,
     return [("ep-edition", EDITION_NAMES[name]),
             ("ep-version", f"elliptic-pendulum {version}"),
             ("ep-date", today.isoformat()),
-            ("ep-licence", f"\u00a9 2024-2026 elliptic-pendulum contributors. {LICENCE}.")]
+            ("ep-licence", COPYRIGHT[language].format(licence=LICENCE[language]))]
 
 
 def build(book: Path, build_dir: Path, cache: Path | None = None,
-          env: dict[str, str] | None = None) -> dict[str, dict]:
-    """Both single-page builds and both PDFs; return, per PDF, the seconds of each step
-    and what the printer saw (formulas typeset, solutions opened, images).
+          env: dict[str, str] | None = None,
+          names: tuple[str, ...] = tuple(EDITIONS), workers: int = 1) -> dict[str, dict]:
+    """The single-page builds and the PDFs of the editions ``names``; return, per PDF, the
+    seconds of each step and what the printer saw (formulas typeset, solutions opened,
+    images).
 
-    env: extra environment variables for sphinx-build (e.g. where the docs build is)."""
+    env: extra environment variables for sphinx-build (e.g. where the docs build is).
+    workers: editions made at once (each a sphinx-build, then a Chromium: one core each);
+    the builds only read the execution cache, and each has its own folder."""
     env = dict(os.environ, JUPYTER_PLATFORM_DIRS="1", **(env or {}))
     # The notebook kernel must see this interpreter's packages.
     env["PATH"] = str(Path(sys.executable).parent) + os.pathsep + env.get("PATH", "")
-    report: dict[str, dict] = {}
-    for name, (sub, extra, solutions) in EDITIONS.items():
+
+    def make(name: str) -> dict:
+        sub, extra, solutions, _ = EDITIONS[name]
         out = build_dir / sub / "singlehtml"
         options = ["-D", f"nb_execution_cache_path={cache}"] if cache else []
         start = time.perf_counter()
@@ -75,8 +99,10 @@ def build(book: Path, build_dir: Path, cache: Path | None = None,
         start = time.perf_counter()
         seen = print_pdf(out / "index.html", build_dir / "pdf" / f"{name}.pdf", solutions,
                          title_page=title_page(name))
-        report[name] = {"build s": built, "print s": time.perf_counter() - start, **seen}
-    return report
+        return {"build s": built, "print s": time.perf_counter() - start, **seen}
+
+    with ThreadPoolExecutor(max_workers=workers) as pool:
+        return dict(zip(names, pool.map(make, names), strict=True))
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -84,11 +110,14 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("book", type=Path, help="the book's source folder")
     parser.add_argument("build", type=Path, help="the build folder (book/_build)")
     parser.add_argument("--execution-cache", type=Path, help="myst-nb's cache folder")
+    parser.add_argument("--jobs", type=int, default=os.cpu_count() or 1,
+                        help="editions made at once (default: one per core)")
     args = parser.parse_args(argv)
-    for name, seen in build(args.book, args.build, args.execution_cache).items():
+    report = build(args.book, args.build, args.execution_cache, workers=max(1, args.jobs))
+    for name, seen in report.items():
         print(f"{name}.pdf: " + ", ".join(
             f"{k} {v:.1f}" if isinstance(v, float) else f"{k} {v}" for k, v in seen.items()))
-    print(f"wrote {args.build / 'pdf' / 'book.pdf'} and book-student.pdf")
+    print(f"wrote {', '.join(f'{n}.pdf' for n in EDITIONS)} in {args.build / 'pdf'}")
     return 0
 
 

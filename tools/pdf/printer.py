@@ -80,7 +80,8 @@ document.querySelectorAll(".hint").length
 #   which no element has, or "#document-<page>", an empty span before the chapter: each
 #   points at the element <id> of that chapter (or the chapter's heading) instead, under
 #   an id of its own (ids repeat across chapters: every chapter has "exercises").
-# - The animation's caption says "press ▶ to play": the paper has its first frame only.
+# - The animation's caption says "press ▶ to play" (the Japanese edition: "▶ を押すと再生
+#   される。"): the paper has its first frame only.
 # - A number in e-notation (1e-12, in code, outputs and text) is kept on one line.
 # - The title page: the theme's print header (its <h1>) with the edition, the package
 #   version, the date and the licences.
@@ -125,7 +126,8 @@ PREPARE = r"""
   }
   const walker = document.createTreeWalker(document.body, NodeFilter.SHOW_TEXT);
   for (let node; (node = walker.nextNode());) {
-    const text = node.nodeValue.replace(/;?\s*press\s+\u25b6\s+to\s+play\b/g, "");
+    const text = node.nodeValue.replace(/;?\s*press\s+\u25b6\s+to\s+play\b/g, "")
+      .replace(/\u25b6\s*を押すと再生される。?/g, "");
     if (text !== node.nodeValue) { node.nodeValue = text; seen.captions++; }
   }
   // A number in e-notation is one token: its line may not break after "1e-".
