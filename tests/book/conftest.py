@@ -8,10 +8,14 @@ from __future__ import annotations
 
 import os
 import shutil
+from collections.abc import Iterator
+from concurrent.futures import Future, ThreadPoolExecutor
 from pathlib import Path
 from typing import NoReturn
 
 import pytest
+
+from tests.conftest import BOOK, Build
 
 _HERE = Path(__file__).resolve().parent
 ROOT = _HERE.parents[1]
@@ -60,3 +64,32 @@ def axe_script() -> str:
             "CI must run the accessibility check",
         )
     return script.read_text(encoding="utf-8")
+
+
+@pytest.fixture(scope="session")
+def background() -> Iterator[ThreadPoolExecutor]:
+    """Work that waits for nothing of the browser survey, started beside it.
+
+    A browser spends much of a page waiting (loads, MathJax's timers): across the tier one
+    of the two cores sat idle about half the time, so the survey's fixture starts the PDFs
+    here, and the PDF tests take the result when their turn comes.
+    """
+    with ThreadPoolExecutor(max_workers=1) as pool:
+        yield pool
+
+
+@pytest.fixture(scope="session")
+def pdf_job(background: ThreadPoolExecutor, tmp_path_factory: pytest.TempPathFactory,
+            docs_build: Build, book_build: Build, execution_cache: Path) -> Future:
+    """The four PDFs of `make pdf`, on the session's execution cache (no page runs again),
+    two editions at a time: a Future of (folder, tools/pdf/build.py's report)."""
+    from tools.pdf import build as build_pdf
+
+    out = tmp_path_factory.mktemp("pdf")
+    if docs_build.returncode != 0 or book_build.returncode != 0:
+        failed: Future = Future()
+        failed.set_exception(RuntimeError("the docs or the book did not build"))
+        return failed
+    env = {"ELLIPTIC_PENDULUM_DOCS_HTML": str(docs_build.outdir)}
+    return background.submit(
+        lambda: (out, build_pdf.build(BOOK, out, execution_cache, env, workers=2)))

@@ -20,8 +20,8 @@ import re
 import shutil
 import subprocess
 from collections import Counter
+from concurrent.futures import Future
 from dataclasses import dataclass, field
-from pathlib import Path
 from typing import Any
 
 import pytest
@@ -99,8 +99,7 @@ TEACHERS = {"book": "book-student", "book-ja": "book-student-ja"}
 
 
 @pytest.fixture(scope="session")
-def pdfs(tmp_path_factory: pytest.TempPathFactory, docs_build: Build, book_build: Build,
-         execution_cache: Path) -> dict:
+def pdfs(pdf_job: Future, docs_build: Build) -> dict:
     _need("chromium", shutil.which("chromium") is not None or "CHROMIUM" in os.environ)
     _need("pypdf", importlib.util.find_spec("pypdf") is not None)
     # The Japanese PDFs' faces (Debian's fonts-ipafont-mincho and -gothic, .ci/run).
@@ -109,11 +108,8 @@ def pdfs(tmp_path_factory: pytest.TempPathFactory, docs_build: Build, book_build
     _need("fonts-ipafont-mincho and -gothic", "IPAPMincho" in faces and "IPAPGothic" in faces)
     if docs_build.returncode != 0:
         pytest.fail("the docs did not build (the book links to them)", pytrace=False)
-    out = tmp_path_factory.mktemp("pdf")
-    # The session's execution cache, which the book build filled: no page runs again.
-    # Two at a time, one per core: the machine has two.
-    report = build_pdf.build(BOOK, out, execution_cache,
-                             {"ELLIPTIC_PENDULUM_DOCS_HTML": str(docs_build.outdir)}, workers=2)
+    # Made beside the browser survey (tests/book/conftest.py), or now if it did not run.
+    out, report = pdf_job.result()
     print({k: {n: round(v, 1) if isinstance(v, float) else v for n, v in r.items()}
            for k, r in report.items()})
     from pypdf import PdfReader
