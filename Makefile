@@ -13,6 +13,7 @@
 #   make docs         API/reference site in docs/_build/html
 #   make notebooks    classroom notebooks, notebooks/student and notebooks/instructor, each with
 #                     the package's wheel, requirements.txt and a README, and zipped
+#   make notebooks-ja the Japanese ones, notebooks/ja/student and notebooks/ja/instructor
 #   make book-student the student site (no solutions) in book/_build/student/html, likewise
 #   make pdf          book/_build/pdf/book.pdf (solutions open) and book-student.pdf, and
 #                     the Japanese edition's book-ja.pdf and book-student-ja.pdf
@@ -38,7 +39,7 @@ export PATH := $(CURDIR)/$(VENV)/bin:$(PATH)
 # Opt in to Jupyter's platformdirs layout now, which also silences its migration warning.
 export JUPYTER_PLATFORM_DIRS := 1
 
-.PHONY: venv reference book book-ja book-strict gettext i18n-update i18n-status book-student docs notebooks nbgrader pdf bench test test-fast lint clean
+.PHONY: venv reference book book-ja book-strict gettext i18n-update i18n-status book-student docs notebooks notebooks-ja nbgrader pdf bench test test-fast lint clean
 
 venv: $(STAMP)
 
@@ -96,6 +97,13 @@ docs: $(STAMP)
 notebooks: $(STAMP)
 	rm -rf notebooks/student notebooks/instructor
 	$(PY) -m tools.classroom book notebooks --execute
+
+# The same in Japanese, notebooks/ja/student and notebooks/ja/instructor: each page through
+# its catalog in book/locale (the code cells are the English ones, so they glue the same
+# values), the exporter's own words and the self-checks' answers in Japanese.
+notebooks-ja: $(STAMP)
+	rm -rf notebooks/ja
+	$(PY) -m tools.classroom book notebooks/ja --execute --language ja
 
 # The student site: the book without solutions (book/_ext/classroom.py removes them from
 # the pages, their sources and the notebooks) and its own copy of the reference.

@@ -5,7 +5,9 @@
   (myst-nb's ``jupyter_execute/<page>.glue.json``, so the notebook's text quotes exactly what
   the HTML page shows), adds what a student needs to run them (tools/classroom/bundle.py:
   the package's wheel, built from this repository, ``requirements.txt`` and a README on
-  installing them) and zips each edition as ``classroom/<name>-<edition>.zip``.
+  installing them) and zips each edition as ``classroom/<name>-<edition>.zip``. A translated
+  edition (``-D language=ja``) exports its notebooks in its language, through the catalogs
+  it is built with.
 - ``html-page-context``: each chapter page's download menu (sphinx-book-theme) offers the
   page's student notebook and the student zip, and in the instructor site (the default
   build) the instructor notebook and zip too, as relative links into the build: they work
@@ -209,17 +211,23 @@ def _export(app: Sphinx, exception: BaseException | None) -> None:
     try:
         export_notebooks.export(
             Path(app.srcdir), out, glue_from=Path(app.outdir).parent / "jupyter_execute",
-            editions=editions,
+            editions=editions, language=_language(app),
         )
     except ValueError as err:  # a page the exporter cannot translate: say which, and why
         logger.warning(f"classroom notebooks not exported: {err}", type="classroom")
         return
     try:
-        bundle.bundle_editions(out, editions)
+        bundle.bundle_editions(out, editions, language=_language(app))
     except RuntimeError as err:  # the wheel did not build: pip's output says why
         logger.warning(f"classroom bundles not made: {err}", type="classroom")
         return
     logger.info(f"classroom notebooks ({', '.join(editions)}) in {out}")
+
+
+def _language(app: Sphinx) -> str:
+    # The edition's notebooks in its own language: the exporter translates each page
+    # through the catalogs this build reads (book/locale), before it converts the MyST.
+    return str(app.config.language or "en")
 
 
 def _builder_inited(app: Sphinx) -> None:

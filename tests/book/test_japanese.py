@@ -172,3 +172,43 @@ def test_every_message_is_translated_and_whole(gettext_build: Build) -> None:
          "ja"], cwd=ROOT, capture_output=True, text=True)
     print(status.stdout[-3000:])
     assert status.returncode == 0, status.stdout[-5000:]
+
+
+@pytest.mark.parametrize("site", ["instructor", "student"])
+def test_the_japanese_sites_offer_japanese_notebooks(
+    site: str, book_ja_build: Build, student_ja_build: Build
+) -> None:
+    # Each chapter's download menu points into the edition's own classroom/ folder, at a
+    # file that is there; the notebooks and the README there are in Japanese, with the
+    # English edition's code (tests/i18n/test_classroom_ja.py compares them cell by cell).
+    import nbformat
+
+    from tools.classroom import bundle
+    from tools.classroom.labels import scan
+
+    ja = _ok(book_ja_build if site == "instructor" else student_ja_build)
+    files = scan(BOOK).files
+    editions = ("student", "instructor") if site == "instructor" else ("student",)
+    for page, name in files.items():
+        html = (ja / f"{page}.html").read_text(encoding="utf-8")
+        links = set(re.findall(r'href="([^"]*classroom/[^"]+)"', html))
+        wanted = {f"classroom/{e}/{name}" for e in editions} | {
+            f"classroom/{bundle.bundle_name(e)}.zip" for e in editions}
+        assert links == wanted, page
+        for link in links:
+            assert (ja / link).is_file(), (page, link)
+    for edition in editions:
+        folder = ja / "classroom" / edition
+        notebooks = sorted(folder.glob("*.ipynb"))
+        assert [p.name for p in notebooks] == list(files.values())
+        for path in notebooks:
+            text = "\n".join(c.source for c in nbformat.read(path, as_version=4).cells
+                             if c.cell_type == "markdown")
+            assert len(JAPANESE_CHAR.findall(text)) > 0.3 * len(LETTER.findall(text)), path
+        readme = (folder / bundle.README).read_text(encoding="utf-8")
+        assert readme.startswith("# 単振り子と楕円関数") and "## ノートパソコンで" in readme
+        assert (folder / bundle.SELFCHECK / "LANGUAGE").read_text().strip() == "ja"
+    if site == "student":  # no solution reached the student's Japanese notebooks
+        for path in (ja / "classroom" / "student").glob("*.ipynb"):
+            assert "の解答" not in path.read_text(encoding="utf-8"), path
+        assert not (ja / "classroom" / "instructor").exists()

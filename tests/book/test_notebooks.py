@@ -63,7 +63,8 @@ def readme_install(folder: Path) -> list[str]:
     """The README's install command for a laptop (the only ``python -m pip install`` line
     of its laptop section), as argv."""
     text = (folder / bundle.README).read_text(encoding="utf-8")
-    laptop = text.split("\n## On a laptop", 1)[1].split("\n## ", 1)[0]
+    heading = "\n## ノートパソコンで" if "\n## ノートパソコンで" in text else "\n## On a laptop"
+    laptop = text.split(heading, 1)[1].split("\n## ", 1)[0]
     lines = [line.strip() for line in laptop.splitlines()
              if line.strip().startswith("python -m pip install")]
     assert len(lines) == 1, lines
@@ -549,3 +550,53 @@ def test_glue_is_formatted_as_the_book_formats_it() -> None:
     assert ex.format_glue("0.000123456", ".1e") == "1.2e-04"
     assert ex.format_glue("0.5", ".0%") == "50%"
     assert ex.format_glue("'text'", "s") == "text"
+
+
+# The Japanese bundles: the same code as the English ones (tests/i18n/test_classroom_ja.py
+# compares them cell by cell, and every English notebook ran above), so two chapters of
+# each run here, for what differs: the Japanese README's install command, and the
+# self-checks answering in Japanese from the zip's own selfcheck/LANGUAGE.
+JA_PAGES = ("energy", "libration")
+
+
+@pytest.fixture(scope="session")
+def ja_bundles(book_ja_build: Build, student_ja_build: Build,
+               tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
+    """edition -> the folder the Japanese site's zip unpacks to, alone in an empty folder."""
+    for build in (book_ja_build, student_ja_build):
+        if build.returncode != 0:
+            pytest.fail("a Japanese site did not build; see test_japanese", pytrace=False)
+    sites = {"student": student_ja_build.outdir, "instructor": book_ja_build.outdir}
+    folders = {}
+    for edition, site in sites.items():
+        empty = tmp_path_factory.mktemp(f"unzipped-ja-{edition}")
+        with zipfile.ZipFile(site / "classroom" / f"{bundle.bundle_name(edition)}.zip") as z:
+            z.extractall(empty)
+        (folders[edition],) = empty.iterdir()
+    return folders
+
+
+@pytest.mark.parametrize("edition", ex.EDITIONS)
+def test_the_japanese_bundle_installs_and_answers_in_japanese(
+    edition: str, ja_bundles: dict[str, Path], bundles: dict[str, Path], bundle_venv: Path
+) -> None:
+    from tools.classroom.selfcheck import _ja
+
+    folder = ja_bundles[edition]
+    argv = readme_install(folder)
+    assert argv == readme_install(bundles[edition])  # the README's command, in Japanese
+    proc = subprocess.run([str(bundle_venv / "bin" / "python"), *argv[1:]], cwd=folder,
+                          capture_output=True, text=True, timeout=1800)
+    assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
+    all_right = _ja.TEMPLATES["all_right"]
+    still = _ja.TEMPLATES["still"].split("{what}")[0].format(name="")
+    for page in JA_PAGES:
+        nb, _ = _run(folder, BOOK_INDEX.files[page], bundle_venv)
+        said = _self_check_outputs(nb)
+        assert said, page
+        for label, text in said.items():
+            if edition == "instructor":  # the worked solution, judged in Japanese
+                assert "\u2718" not in text and all_right in text, (label, text)
+            else:  # the answer cell as handed out
+                assert "\u2714" not in text and still.strip() in text, (label, text)
+            assert "All right" not in text and "is still" not in text, (label, text)

@@ -22,6 +22,8 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[2]
 PYPROJECT = ROOT / "pyproject.toml"
 TITLE = "The simple pendulum and elliptic functions"
+# The book's title in the Japanese edition (its html_title, book/_ext/i18n.py).
+TITLE_JA = "単振り子と楕円関数"
 CC_BY = "https://creativecommons.org/licenses/by/4.0/"
 # Beside the package's own dependencies: the sliders of "The pendulum in motion" need
 # ipywidgets 8 (the version JupyterLab 4 renders), and a student on a laptop needs a Jupyter
@@ -43,11 +45,17 @@ SELFCHECK = "selfcheck"
 SELFCHECK_SOURCE = Path(__file__).resolve().parent / SELFCHECK
 
 
-def copy_selfcheck(folder: Path) -> Path:
-    """folder/selfcheck: the self-check package, without caches."""
+def copy_selfcheck(folder: Path, language: str = "en") -> Path:
+    """folder/selfcheck: the self-check package, without caches, answering in ``language``
+    (for one other than "en", the copy's LANGUAGE file names it; selfcheck/_core.py reads
+    it, and selfcheck/_<language>.py has the messages)."""
+    if language != "en" and not (SELFCHECK_SOURCE / f"_{language}.py").is_file():
+        raise ValueError(f"the self-checks have no messages in the language {language!r}")
     target = folder / SELFCHECK
     shutil.rmtree(target, ignore_errors=True)
     shutil.copytree(SELFCHECK_SOURCE, target, ignore=shutil.ignore_patterns("__pycache__"))
+    if language != "en":
+        (target / "LANGUAGE").write_text(f"{language}\n", encoding="utf-8")
     return target
 
 
@@ -193,6 +201,122 @@ under the MIT licence, whose text is in the wheel (`elliptic_pendulum-*.dist-inf
 """
 
 
+_CJK = "\u3000-\u30ff\u4e00-\u9fff\uff00-\uffef"
+# A break inside a paragraph: not before a blank line, a heading, a list item or a fence.
+_BREAK = re.compile(r"(?<=\S)\n(?=[^\s#\d-]|`[^`])(?!```)")
+
+
+def readme_ja(edition: str, notebooks: list[str]) -> str:
+    """The Japanese bundle's README (the same steps as :func:`readme`).
+
+    The source wraps its lines; a line break inside a Japanese paragraph would read as a
+    space once the README is rendered, so the paragraphs are joined back.
+    """
+    def join(m: re.Match[str]) -> str:  # nothing between two Japanese characters
+        before, after = m.string[m.start() - 1], m.string[m.end()]
+        both = all(re.match(f"[{_CJK}]", c) for c in (before, after))
+        return "" if both else " "
+
+    return _BREAK.sub(join, _readme_ja(edition, notebooks))
+
+
+def _readme_ja(edition: str, notebooks: list[str]) -> str:
+    folder = bundle_name(edition)
+    zip_name = folder + ".zip"
+    first = notebooks[0] if notebooks else "最初のノートブック"
+    content = ("全章とその演習（各演習の下に、答えを書くセルと、結果が正しいかどうかを教える"
+               "セルフチェックがある）" if edition == "student" else "全章とその演習、演習の解答")
+    kind = "学生用" if edition == "student" else "教員用"
+    wheel = wheel_name()
+    return f"""\
+# {TITLE_JA}：授業用ノートブック（{kind}）
+
+このフォルダには、本書『{TITLE_JA}』を Jupyter ノートブックにしたもの、すなわち{content}が
+入っている。`{first}` が章の一覧である。ノートブックは Python パッケージ `elliptic_pendulum`
+を使う。このパッケージはパッケージインデックスにはなく、このフォルダのファイル `{wheel}` が
+それである。フォルダ `{SELFCHECK}` には演習のセルフチェックが入っており、ノートブックはこれを
+同じ場所から読み込む（ノートブックと同じフォルダに置いたままにすること）。`{REQUIREMENTS}` には、
+ノートブックが使うそのほかのパッケージ（NumPy、SciPy、SymPy、Matplotlib、mpmath、スライダー用の
+ipywidgets）と、ノートブックを開くための JupyterLab が並んでいる。
+
+## ノートパソコンで（Windows、macOS、Linux）
+
+Python 3.11 以降が必要である（python.org から入手する。Windows では、インストーラーで
+「Add python.exe to PATH」にチェックを入れる）。`{zip_name}` を展開し、フォルダ `{folder}` で
+ターミナルを開いて（Windows では PowerShell。フォルダを右クリックして「ターミナルで開く」を
+選んでもよい）、次のようにする。
+
+1. 授業用の仮想環境を作り、有効にする。
+
+   macOS と Linux：
+
+   ```
+   python3 -m venv .venv
+   source .venv/bin/activate
+   ```
+
+   Windows（PowerShell。古いコマンドプロンプトでは `.venv\\Scripts\\activate.bat`）：
+
+   ```
+   py -m venv .venv
+   .venv\\Scripts\\Activate.ps1
+   ```
+
+   PowerShell がスクリプトの実行を拒むときは、先に
+   `Set-ExecutionPolicy -Scope CurrentUser RemoteSigned` を実行する。
+
+2. パッケージと、ノートブックに必要なものをインストールする（どのシステムでも同じコマンド）。
+
+   ```
+   {install_command()}
+   ```
+
+3. Jupyter を開き、その中で `{first}` を開く。
+
+   ```
+   jupyter lab
+   ```
+
+次回からは、仮想環境をもう一度有効にして（手順 1 の 2 行目）`jupyter lab` を実行すればよい。
+
+## JupyterHub で
+
+1. `{zip_name}` をアップロードする（ファイルブラウザーのアップロードボタン）。
+2. ターミナルを開き（File > New > Terminal）、展開してインストールする。
+
+   ```
+   python -m zipfile -e {zip_name} .
+   cd {folder}
+   {install_command(user=True)}
+   ```
+
+   ターミナルが使えないときは、zip と同じ場所にノートブックを作り、セル
+   `!python -m zipfile -e {zip_name} .` で展開する。続いてフォルダ `{folder}` の
+   `{first}` を開き、新しいセルで次を実行する。
+
+   ```
+   {pip_magic()}
+   ```
+
+3. 新しいパッケージが見えるように、開いていたノートブックのカーネルを再起動する（Kernel >
+   Restart Kernel）。
+
+ノートブックで `import elliptic_pendulum` が失敗するときは、インストールがそのノートブックの
+カーネルに届いていない。そのノートブックで上の `%pip` の行を実行し、カーネルを再起動すること。
+
+## ライセンス
+
+ノートブックの本文と図は本書『{TITLE_JA}』のものであり、© 2024-2026 elliptic-pendulum
+contributors、クリエイティブ・コモンズ 表示 4.0 国際（CC BY 4.0、{CC_BY}）の下で利用できる。
+本書と著作者を表示し、ライセンスへのリンクを示し、変更した点を明記すれば、共有も改変も自由である。
+本書は竹野茂治氏のノート『単振り子と楕円関数』（新潟工科大学、2024 年）に沿っているが、
+このノートはその著者の著作物であり、これらのライセンスの対象ではない。
+
+コード（wheel の中のパッケージ `elliptic_pendulum` とノートブックのコードセル）は MIT ライセンス
+であり、その条文は wheel の中（`elliptic_pendulum-*.dist-info/licenses/`）にある。
+"""
+
+
 def build_wheel(dest: Path, root: Path = ROOT) -> Path:
     """Build the package's wheel into dest, offline, from a clean copy of the sources.
 
@@ -225,13 +349,15 @@ def build_wheel(dest: Path, root: Path = ROOT) -> Path:
     return target
 
 
-def write(folder: Path, edition: str, wheel: Path) -> list[Path]:
-    """Add the wheel, requirements.txt and the README to an edition's folder of notebooks."""
+def write(folder: Path, edition: str, wheel: Path, language: str = "en") -> list[Path]:
+    """Add the wheel, requirements.txt and the README to an edition's folder of notebooks
+    (the README and the self-checks' answers in ``language``)."""
     notebooks = sorted(p.name for p in folder.glob("*.ipynb"))
     shutil.copy2(wheel, folder / wheel.name)
     (folder / REQUIREMENTS).write_text(requirements(), encoding="utf-8")
-    (folder / README).write_text(readme(edition, notebooks), encoding="utf-8")
-    checks = copy_selfcheck(folder)
+    text = readme_ja(edition, notebooks) if language == "ja" else readme(edition, notebooks)
+    (folder / README).write_text(text, encoding="utf-8")
+    checks = copy_selfcheck(folder, language)
     return [folder / wheel.name, folder / REQUIREMENTS, folder / README, checks]
 
 
@@ -245,18 +371,22 @@ def zip_edition(folder: Path, edition: str, zip_dir: Path) -> Path:
         files.append(folder / wheel_name())
         for path in files:
             z.write(path, f"{name}/{path.name}")
-        for path in sorted((folder / SELFCHECK).rglob("*.py")):
-            z.write(path, f"{name}/{path.relative_to(folder).as_posix()}")
+        # The package's modules and its LANGUAGE file (a translated bundle's).
+        for path in sorted((folder / SELFCHECK).rglob("*")):
+            if path.is_file() and (path.suffix == ".py" or path.name == "LANGUAGE"):
+                z.write(path, f"{name}/{path.relative_to(folder).as_posix()}")
     return archive
 
 
-def bundle_editions(out: Path, editions: tuple[str, ...]) -> list[Path]:
+def bundle_editions(out: Path, editions: tuple[str, ...], language: str = "en") -> list[Path]:
     """For each edition folder out/<edition> of exported notebooks: add the bundle files
     and zip it as out/<name>-<edition>.zip (the wheel is built once). Returns the zips."""
+    if language not in ("en", "ja"):
+        raise ValueError(f"language must be 'en' or 'ja', not {language!r}")
     with tempfile.TemporaryDirectory() as tmp:
         wheel = build_wheel(Path(tmp))
         zips = []
         for edition in editions:
-            write(out / edition, edition, wheel)
+            write(out / edition, edition, wheel, language)
             zips.append(zip_edition(out / edition, edition, out))
     return zips

@@ -16,9 +16,14 @@ myst-nb formats ``{glue:text}`name:fmt``` so integers stay integers.
 Each edition's folder also gets what a student needs to run it (bundle.py: the package's
 wheel, requirements.txt, a README) and is zipped as ``notebooks/<name>-<edition>.zip``.
 
+``--language ja`` makes the Japanese notebooks: each Markdown cell goes through its page's
+catalog in book/locale before it is converted (translation.py), the exporter's own words are
+Japanese (words.py), and so are the self-checks' answers and the bundle's README. The code
+cells are the English ones.
+
 Usage::
 
-    python -m tools.classroom book notebooks [--execute | --glue-from DIR]
+    python -m tools.classroom book notebooks [--execute | --glue-from DIR] [--language ja]
 """
 
 from __future__ import annotations
@@ -33,12 +38,13 @@ from pathlib import Path
 import jupytext
 import nbformat
 
-from . import bundle, selfcheck
+from . import bundle, selfcheck, translation
 from .bib import label as bib_label
 from .bib import load as load_bib
 from .bib import reference_line
 from .labels import Book, scan
-from .markdown import SENTINEL, Context, convert_markdown
+from .markdown import SENTINEL, Context, Target, convert_markdown
+from .words import ENGLISH, WORDS, Words, words
 
 EDITIONS = ("student", "instructor")
 GLUE_IMPORT = re.compile(r"^\s*from\s+myst_nb\s+import\s+glue\s*$", re.MULTILINE)
@@ -109,36 +115,53 @@ def _code_cell(cell: nbformat.NotebookNode, first_glue: list[bool]) -> None:
     cell.outputs, cell.execution_count = [], None
 
 
-def _caption_cell(cell: nbformat.NotebookNode, book: Book, ctx: Context) -> list[str]:
+def _caption_cell(cell: nbformat.NotebookNode, book: Book, ctx: Context,
+                  catalog: translation.Catalog | None = None) -> list[str]:
     figure = cell.metadata.get("mystnb", {}).get("figure", {})
     if not figure.get("caption"):
         return []
     name = figure.get("name", "")
     number = book.targets[name].number if name in book.targets else ""
-    caption = convert_markdown(str(figure["caption"]).strip(), ctx)
+    caption = str(figure["caption"]).strip()
+    if catalog is not None:
+        caption = translation.translate(caption, catalog)
+    caption = convert_markdown(caption, ctx)
     anchor = f'<a id="{name}"></a>\n\n' if name else ""
-    return [f"{anchor}**Fig. {number}.** {caption}" if number else anchor + caption]
+    if not number:
+        return [anchor + caption]
+    return [anchor + ctx.words.figure_caption.format(number=number, caption=caption)]
 
 
-def first_cell(book: Book, page: str, edition: str, answers: bool = False) -> str:
+def first_cell(book: Book, page: str, edition: str, answers: bool = False,
+               language: Words = ENGLISH) -> str:
     """What a notebook says first: what it is, how to install what it needs if the import
     fails (the files beside it, bundle.py), and the licence of its text and figures."""
     title = book.titles.get(page, page)
+    name = bundle.TITLE_JA if language.language == "ja" else bundle.TITLE
     lines = [
-        f"*{bundle.TITLE}*, classroom notebook ({edition} edition): **{title}**.",
-        f"If `import elliptic_pendulum` fails, run `{bundle.pip_magic()}` in a cell here "
-        f"(the files beside this notebook, see `{bundle.README}`), then restart the kernel.",
+        language.first.format(book=name, edition=language.edition[edition], title=title),
+        language.install.format(pip=bundle.pip_magic(), readme=bundle.README),
     ]
     if answers:
-        lines.append("Write your answers in the cells under each exercise; a self-check "
-                     "cell tells you whether a result is right.")
-    lines.append(
-        f"Text and figures © 2024-2026 elliptic-pendulum contributors, from the book's page "
-        f"`{page}.md`, under [CC BY 4.0]({bundle.CC_BY}); code under the MIT licence.")
+        lines.append(language.answers_intro)
+    lines.append(language.licence.format(page=page, cc_by=bundle.CC_BY))
     return "\n\n".join(lines)
 
 
-def answer_cells(label: str, ctx: Context) -> list[nbformat.NotebookNode]:
+def _what(text: str, language: str) -> str:
+    # A result's description, as the self-check names it in the notebook's language.
+    if language == "en":
+        return text
+    from .selfcheck import _ja
+
+    found = _ja.MESSAGES.get(text)
+    if found is None:
+        raise translation.Untranslated(f"self-check text without a translation: {text[:80]!r}")
+    return found
+
+
+def answer_cells(label: str, ctx: Context,
+                 catalog: translation.Catalog | None = None) -> list[nbformat.NotebookNode]:
     """What a student gets under an exercise: for its results, a cell that names them and
     the self-check that reads them (selfcheck/); for what it asks to prove or explain, a
     Markdown cell to write in and a folded hint. An exercise without a self-check gets one
@@ -147,22 +170,24 @@ def answer_cells(label: str, ctx: Context) -> list[nbformat.NotebookNode]:
     if exercise is None:
         return [nbformat.v4.new_code_cell("")]
     cells = []
+    w = ctx.words
     if exercise.values:
-        names = "; ".join(f"`{v.name}`, {v.what}" for v in exercise.values)
-        cells.append(nbformat.v4.new_markdown_cell(
-            f"**Your results.** Work in the cell below, and leave in it {names}. Then run "
-            "the self-check under it: it says whether each result is right and, if not, "
-            "what to look at."))
+        names = w.result_separator.join(
+            w.result_name.format(name=v.name, what=_what(v.what, w.language))
+            for v in exercise.values)
+        cells.append(nbformat.v4.new_markdown_cell(w.results.format(names=names)))
         cells.append(nbformat.v4.new_code_cell(
-            "\n".join(f"{v.name} = ...  # replace ... by your result" for v in exercise.values)))
+            "\n".join(w.placeholder.format(name=v.name) for v in exercise.values)))
         cells.extend(self_check_cells(label, "student"))
     if exercise.written is not None:
-        hint = convert_markdown(exercise.written, ctx).strip()
-        cells.append(nbformat.v4.new_markdown_cell(
-            f"<details><summary><b>Hint</b> for the parts to prove or explain</summary>\n\n"
-            f"{hint}\n\n</details>"))
-        cell = nbformat.v4.new_markdown_cell(
-            "**Your answer** to the parts to prove or explain (double-click to write here).")
+        # The site shows the same hint under the exercise (book/_ext/classroom.py), so the
+        # page's catalog translates it.
+        written = exercise.written
+        if catalog is not None:
+            written = translation.translate(written, catalog)
+        hint = convert_markdown(written, ctx).strip()
+        cells.append(nbformat.v4.new_markdown_cell(w.hint.format(hint=hint)))
+        cell = nbformat.v4.new_markdown_cell(w.answer)
         cell.metadata["classroom"] = {"written": label}
         cells.append(cell)
     if not exercise.values:  # for the computations a proof exercise may ask for too
@@ -184,12 +209,50 @@ def self_check_cells(label: str, edition: str) -> list[nbformat.NotebookNode]:
     return [cell]
 
 
+def localize(book: Book, book_dir: Path, language: str) -> Book:
+    """The book's titles and link texts in ``language``: page and section titles from the
+    pages' catalogs, "Exercise 5", "Fig. 3", "Lemma 2" in the exporter's words."""
+    if language == "en":
+        return book
+    w = words(language)
+    catalogs = {page: translation.load(book_dir / "locale", language, page)
+                for page in book.pages}
+    titles = {page: catalogs[page].need(title) if page in catalogs else title
+              for page, title in book.titles.items()}
+    targets = {}
+    for label, t in book.targets.items():
+        title = t.title
+        if t.kind in ("section", "page", "other") and t.page in catalogs:
+            found = catalogs[t.page].get(title)
+            title = found if found is not None else (
+                catalogs[t.page].need(title) if t.kind == "section" else title)
+        elif t.kind == "exercise":
+            title = w.exercise.format(number=t.number).strip()
+        elif t.kind == "figure" and t.number:
+            title = w.figure.format(number=t.number)
+        elif t.kind == "statement":
+            kind = title.split(" ")[0].lower()
+            title = " ".join(p for p in (w.statement(kind), t.number) if p)
+        targets[label] = Target(t.page, t.kind, title, t.number)
+    for catalog in catalogs.values():
+        catalog.check()
+    return Book(book.pages, book.exported, book.files, titles, targets, book.exercise_numbers)
+
+
 def export_page(
-    book_dir: Path, book: Book, page: str, edition: str, glue: dict[str, str] | None
+    book_dir: Path, book: Book, page: str, edition: str, glue: dict[str, str] | None,
+    language: str = "en",
 ) -> nbformat.NotebookNode:
-    """One page as a plain notebook of one edition. glue=None leaves `name` placeholders."""
+    """One page as a plain notebook of one edition. glue=None leaves `name` placeholders.
+
+    language: the page's text through its catalog (translation.py) before it is converted,
+    and the exporter's own words in that language; ``book`` is then the localized one.
+    """
     if edition not in EDITIONS:
         raise ValueError(f"edition must be one of {EDITIONS}, not {edition!r}")
+    w = words(language)
+    catalog = (None if language == "en"
+               else translation.load(book_dir / "locale", language, page))
     bib = load_bib(book_dir / "references.bib")
     cited: list[str] = []
 
@@ -217,7 +280,7 @@ def export_page(
         return joined if role in {"cite:t", "cite:ts"} else f"\\[{joined}\\]"
 
     ctx = Context(page, book.files, book.titles, book.targets, glued, cite,
-                  book.exercise_numbers, book.exported[1:])
+                  book.exercise_numbers, book.exported[1:], w)
     nb = jupytext.read(book_dir / f"{page}.md", fmt="md:myst")
     cells: list[nbformat.NotebookNode] = []
     in_solution, first_glue, answers, current = False, [True], False, ""
@@ -232,18 +295,19 @@ def export_page(
     for cell in nb.cells:
         if cell.cell_type == "code":
             if not in_solution or edition == "instructor":
-                captions = _caption_cell(cell, book, ctx)
+                captions = _caption_cell(cell, book, ctx, catalog)
                 _code_cell(cell, first_glue)
                 cells.append(mark(cell))
                 cells.extend(mark(nbformat.v4.new_markdown_cell(t)) for t in captions)
             continue
-        text = convert_markdown(cell.source, ctx)
+        source = cell.source if catalog is None else translation.translate(cell.source, catalog)
+        text = convert_markdown(source, ctx)
         pieces = re.split(f"^{SENTINEL}(\\w[\\w:-]*){SENTINEL}$", text, flags=re.MULTILINE)
         for index, piece in enumerate(pieces):
             marker, _, label = piece.partition(":") if index % 2 else ("", "", "")
             if marker == "ANSWER":
                 if edition == "student":
-                    cells.extend(answer_cells(label, ctx))
+                    cells.extend(answer_cells(label, ctx, catalog))
                     answers = True
             elif marker == "SOLUTION-START":
                 in_solution, current = True, label
@@ -261,9 +325,12 @@ def export_page(
     if cited:
         keys = list(dict.fromkeys(cited))
         cells.append(nbformat.v4.new_markdown_cell(
-            "## References\n\n" + "\n".join(reference_line(k, bib[k]) for k in keys)))
+            f"## {w.references}\n\n" + "\n".join(reference_line(k, bib[k]) for k in keys)))
+    if catalog is not None:
+        catalog.check()  # a Japanese notebook holds no English paragraph
     out = nbformat.v4.new_notebook()
-    out.cells = [nbformat.v4.new_markdown_cell(first_cell(book, page, edition, answers)), *cells]
+    out.cells = [nbformat.v4.new_markdown_cell(first_cell(book, page, edition, answers, w)),
+                 *cells]
     out.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",
                                   "language": "python"}
     out.metadata["language_info"] = {"name": "python"}
@@ -314,9 +381,16 @@ def glue_from_build(folder: Path, page: str) -> dict[str, str]:
 
 def export(book_dir: Path, out_dir: Path, *, run: bool = False, glue_from: Path | None = None,
            editions: tuple[str, ...] = EDITIONS, kernel: str = "python3",
-           timeout: int = 600, pages: list[str] | None = None) -> list[Path]:
-    """Write out_dir/<edition>/NN-page.ipynb for every notebook page; return the files."""
-    book = scan(book_dir)
+           timeout: int = 600, pages: list[str] | None = None,
+           language: str = "en") -> list[Path]:
+    """Write out_dir/<edition>/NN-page.ipynb for every notebook page; return the files.
+
+    language: "ja" writes the Japanese edition's notebooks (book/locale's catalogs); their
+    code cells are the English ones, so they glue the same values.
+    """
+    words(language)  # an unknown language fails here, before anything is written
+    english = scan(book_dir)
+    book = localize(english, book_dir, language)
     written = []
     for page in pages if pages is not None else book.exported:
         glue: dict[str, str] | None = None
@@ -324,10 +398,10 @@ def export(book_dir: Path, out_dir: Path, *, run: bool = False, glue_from: Path 
             glue = glue_from_build(glue_from, page)
         elif run:  # in the folder the notebook will live in, as a student runs it
             (out_dir / "instructor").mkdir(parents=True, exist_ok=True)
-            glue = harvest(export_page(book_dir, book, page, "instructor", None),
+            glue = harvest(export_page(book_dir, english, page, "instructor", None),
                            out_dir / "instructor", kernel, timeout)
         for edition in editions:
-            nb = export_page(book_dir, book, page, edition, glue)
+            nb = export_page(book_dir, book, page, edition, glue, language)
             target = out_dir / edition / book.files[page]
             target.parent.mkdir(parents=True, exist_ok=True)
             nbformat.write(nb, target)
@@ -344,11 +418,13 @@ def main(argv: list[str] | None = None) -> int:
                      help="run each instructor notebook once to fill in the glued values")
     how.add_argument("--glue-from", type=Path, help="a build's jupyter_execute folder")
     parser.add_argument("--timeout", type=int, default=600, help="seconds per cell")
+    parser.add_argument("--language", default="en", choices=sorted(WORDS),
+                        help="the edition's language (ja: the Japanese notebooks)")
     args = parser.parse_args(argv)
     for path in export(args.book, args.out, run=args.execute, glue_from=args.glue_from,
-                       timeout=args.timeout):
+                       timeout=args.timeout, language=args.language):
         print(f"wrote {path}")
-    for path in bundle.bundle_editions(args.out, EDITIONS):
+    for path in bundle.bundle_editions(args.out, EDITIONS, language=args.language):
         print(f"wrote {path}")
     return 0
 

@@ -15,6 +15,8 @@ import re
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
+from .words import ENGLISH, Words
+
 SENTINEL = "\x00"
 DIRECTIVE_OPEN = re.compile(r"^(?P<fence>`{3,}|:{3,})\{(?P<name>[^}]+)\}\s*(?P<arg>.*)$")
 PLAIN_FENCE = re.compile(r"^(?P<fence>`{3,}|~{3,})[^`{]*$")
@@ -64,6 +66,7 @@ class Context:
     cite: Callable[[str, list[str]], str]
     exercise_numbers: dict[str, str] = field(default_factory=dict)  # exercise label -> number
     chapters: list[str] = field(default_factory=list)  # the pages after the first, in order
+    words: Words = ENGLISH  # what the exporter writes itself, in the notebook's language
 
 
 def link(ctx: Context, label: str, text: str) -> str:
@@ -72,7 +75,7 @@ def link(ctx: Context, label: str, text: str) -> str:
     if target is None:
         raise ValueError(f"cross-reference to unknown label {label!r} in page {ctx.page!r}")
     if target.page not in ctx.files:  # a page of the book without a notebook
-        return f"*{text}* (in the book)"
+        return ctx.words.in_book.format(text=text)
     here = target.page == ctx.page
     if target.kind == "page":
         return f"[{text}]({ctx.files[target.page]})"
@@ -120,7 +123,7 @@ def convert_roles(text: str, ctx: Context) -> str:
             if page not in ctx.titles:
                 raise ValueError(f"{{doc}} to unknown page {page!r} in page {ctx.page!r}")
             if page not in ctx.files:
-                return f"*{text_ or ctx.titles[page]}* (in the book)"
+                return ctx.words.in_book.format(text=text_ or ctx.titles[page])
             return f"[{text_ or ctx.titles[page]}]({ctx.files[page]})"
         if role == "eq":
             target = ctx.targets.get(label)
@@ -210,7 +213,7 @@ def _directive(name: str, arg: str, body: list[str], ctx: Context) -> list[str]:
         options[m["key"]] = m["value"].strip()
         body = body[1:]
     if name == "toctree":  # the first notebook lists the chapters with links
-        caption = options.get("caption", "Contents")
+        caption = options.get("caption", ctx.words.contents)
         items = [f"{i}. [{ctx.titles[p]}]({ctx.files[p]})" for i, p in enumerate(ctx.chapters, 1)]
         return ["", f"**{caption}**", "", *items, ""]
     if name in DROPPED:
@@ -223,25 +226,33 @@ def _directive(name: str, arg: str, body: list[str], ctx: Context) -> list[str]:
         return ["", *anchor, "$$", *body, "$$", ""]
     inner = convert_markdown("\n".join(body), ctx).splitlines()
     if name in {"figure", "image"}:
-        alt = options.get("alt", "figure")
+        alt = options.get("alt", ctx.words.figure_alt)
         number = ctx.targets[label].number if label in ctx.targets else ""
         block = ["", *anchor, f"![{alt}]({arg})", ""]
         if inner:
-            block += [f"*{'Fig. ' + number + '. ' if number else ''}{' '.join(inner)}*", ""]
+            prefix = ctx.words.figure_italic.format(number=number) if number else ""
+            block += [f"*{prefix}{' '.join(inner)}*", ""]
         return block
     if name in SEPARATE:
         return _exercise_part(name, arg, label, inner, ctx)
     if name.startswith("prf:") or name in BOXED:
-        kind = BOXED.get(name, name.split(":")[-1].capitalize())
+        words = ctx.words
+        if name in BOXED:
+            kind = words.boxes.get(name, BOXED[name])
+        else:
+            kind = words.statement(name.split(":")[-1])
         target = ctx.targets.get(label)
         if name == "prf:proof":
-            heading = "Proof"
+            heading = words.proof
         else:
             number = target.number if target else ""
             heading = " ".join(p for p in (kind, number) if p)
             title = convert_roles(arg, ctx)
-            heading = f"{heading} ({title})" if heading and title else (heading or title)
-        head = [f"> **{heading}.**", ">"] if heading else []
+            if heading and title:
+                heading = words.titled.format(heading=heading, title=title)
+            else:
+                heading = heading or title
+        head = [f"> **{heading}{words.heading_end}**", ">"] if heading else []
         return ["", *anchor, *head, *_quote(inner), ""]
     return ["", *anchor, *inner, ""]
 
@@ -250,8 +261,10 @@ def _exercise_part(name: str, arg: str, label: str, inner: list[str], ctx: Conte
     if name in {"exercise", "exercise-start"}:
         number = ctx.exercise_numbers.get(label, "")
         title = convert_roles(arg, ctx)
-        heading = "### Exercise" + (f" {number}" if number else "")
-        heading += f" ({title})" if title else ""
+        heading = ctx.words.exercise.format(number=number).strip()
+        if title:
+            heading = ctx.words.titled.format(heading=heading, title=title)
+        heading = "### " + heading
         block = ["", *(_anchor(label) if label else []), heading, "", *inner, ""]
         if name == "exercise":
             block += [f"{SENTINEL}ANSWER:{label}{SENTINEL}", ""]
@@ -262,7 +275,9 @@ def _exercise_part(name: str, arg: str, label: str, inner: list[str], ctx: Conte
         return ["", f"{SENTINEL}SOLUTION-END{SENTINEL}", ""]
     # solution or solution-start: the argument is the exercise's label.
     number = ctx.exercise_numbers.get(arg, "")
-    heading = "#### Solution" + (f" to Exercise {number}" if number else "")
+    words = ctx.words
+    heading = "#### " + (words.solution.format(number=number) if number
+                         else words.solution_unnumbered)
     block = ["", f"{SENTINEL}SOLUTION-START:{arg}{SENTINEL}", "", heading, "", *inner, ""]
     if name == "solution":
         block += [f"{SENTINEL}SOLUTION-END{SENTINEL}", ""]

@@ -8,6 +8,10 @@ closed form, a series where it asks for the library, ...). :func:`check` compare
 for each value, either that it is right or what is wrong with it, with the hint of the first
 expected mistake it matches: the hint names the mistake, never the value.
 
+It says so in the package's language, named by the file LANGUAGE beside this module (English
+without it): English is written here, another language in its own module, ``_ja.py`` for
+Japanese, which translates the exercises' texts and this module's sentences.
+
 A ``reference`` imports what it needs inside its own body: nbgrader's hidden tests
 (tools/classroom/nbgrader.py) paste its source into the test cell, where nothing else of this
 package exists.
@@ -15,10 +19,12 @@ package exists.
 
 from __future__ import annotations
 
+import importlib
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from functools import cache
+from pathlib import Path
 from typing import Any
 
 # Exercise label -> Exercise, filled by the chapter modules.
@@ -109,69 +115,141 @@ def _as_kind(value: Value, answer: Any) -> Any:
     return value.kind(answer)
 
 
-def judge(value: Value, answer: Any, want: Any) -> tuple[bool, str]:
-    """(right, message) for one answer."""
+def judge(value: Value, answer: Any, want: Any, *,
+          language: str | None = None) -> tuple[bool, str]:
+    """(right, message) for one answer, in ``language`` (default: the package's, see
+    :func:`package_language`)."""
+    texts = _texts(language or package_language())
+    say = texts.templates
+    what = texts.translate(value.what)
     name = f"`{value.name}`"
     if answer is Ellipsis:
-        return False, f"{name} is still `...`: put your answer ({value.what}) in its place."
+        return False, say["still"].format(name=name, what=what)
     try:
         got = _as_kind(value, answer)
     except (TypeError, ValueError, OverflowError):
-        shown = type(answer).__name__
-        return False, (f"{name} should be {_kind_words(value.kind)} ({value.what}), "
-                       f"not the {shown} {answer!r:.60}.")
+        return False, say["kind"].format(name=name, kind=texts.kind_words(value.kind), what=what,
+                                         type=type(answer).__name__, answer=f"{answer!r:.60}")
     if value.kind is float:
         right = value.close(got, want, value.rtol)
     else:
         right = got == want
     if right:
-        return True, f"{name} is right."
+        return True, say["right"].format(name=name)
     for hint in value.hints:
         try:
             matched = bool(hint.when(got, want))
         except (TypeError, ValueError, ArithmeticError):
             matched = False
         if matched:
-            return False, f"{name} is not right yet. {hint.message}"
+            return False, say["hint"].format(name=name, hint=texts.translate(hint.message))
     if value.kind is float:
         if want != 0 and got != 0 and math.copysign(1, got) != math.copysign(1, want):
-            return False, f"{name} has the wrong sign."
+            return False, say["sign"].format(name=name)
         if want != 0:
             # Same sign here: for a negative value, "too large" means in magnitude.
             off = (abs(got) - abs(want)) / abs(want)
-            size = "too large" if off > 0 else "too small"
-            size += " in magnitude" if want < 0 else ""
-            return False, f"{name} is {100 * abs(off):.2g}% {size}."
-    return False, f"{name} is not right yet: look again at {value.what}."
-
-
-def _kind_words(kind: type) -> str:
-    return {float: "a number", int: "a whole number", bool: "True or False",
-            str: "a string"}.get(kind, f"a {kind.__name__}")
+            size = "too_large" if off > 0 else "too_small"
+            size += "_in_magnitude" if want < 0 else ""
+            return False, say[size].format(name=name, percent=f"{100 * abs(off):.2g}")
+    return False, say["look_again"].format(name=name, what=what)
 
 
 def check(label: str, /, **answers: Any) -> bool:
     """Print, for each answer of exercise ``label``, whether it is right (and a hint if not);
     return True when all are. ``check("ex-energy-threshold", v_star=v_star)``."""
+    ok, text = report(label, answers)
+    _show(text)
+    return ok
+
+
+def report(label: str, answers: dict[str, Any], *,
+           language: str | None = None) -> tuple[bool, str]:
+    """What :func:`check` prints (Markdown), and whether all answers are right."""
     if label not in EXERCISES:
         raise ValueError(f"label must be one of the exercises with a self-check, not {label!r}")
     exercise = EXERCISES[label]
     unknown = set(answers) - {v.name for v in exercise.values}
     if unknown:
         raise TypeError(f"{label} has no answer named {', '.join(sorted(unknown))}")
+    texts = _texts(language or package_language())
     want = expected(label)
     lines, ok = [], True
     for value in exercise.values:
         if value.name not in answers:
-            right, message = False, f"`{value.name}` is missing: pass {value.name}={value.name}."
+            right, message = False, texts.templates["missing"].format(var=value.name)
         else:
-            right, message = judge(value, answers[value.name], want[value.name])
+            right, message = judge(value, answers[value.name], want[value.name],
+                                   language=texts.language)
         ok &= right
         lines.append(f"{RIGHT if right else WRONG} {message}")
     if ok:
-        lines.append("All right.")
-    _show("\n\n".join(lines))
-    return ok
+        lines.append(texts.templates["all_right"])
+    return ok, "\n\n".join(lines)
+
+
+# What judge and check say in English; another language's module (_ja.py for "ja") has the
+# same keys and placeholders, and MESSAGES for the exercises' own texts.
+ENGLISH = {
+    "still": "{name} is still `...`: put your answer ({what}) in its place.",
+    "kind": "{name} should be {kind} ({what}), not the {type} {answer}.",
+    "right": "{name} is right.",
+    "hint": "{name} is not right yet. {hint}",
+    "sign": "{name} has the wrong sign.",
+    "too_large": "{name} is {percent}% too large.",
+    "too_small": "{name} is {percent}% too small.",
+    "too_large_in_magnitude": "{name} is {percent}% too large in magnitude.",
+    "too_small_in_magnitude": "{name} is {percent}% too small in magnitude.",
+    "look_again": "{name} is not right yet: look again at {what}.",
+    "missing": "`{var}` is missing: pass {var}={var}.",
+    "all_right": "All right.",
+}
+ENGLISH_KINDS = {float: "a number", int: "a whole number", bool: "True or False",
+                 str: "a string"}
+ENGLISH_OTHER_KIND = "a {kind}"
+# The one-line file that names the package's language; the classroom bundle writes it into
+# the copy of a non-English edition (bundle.copy_selfcheck).
+LANGUAGE_FILE = Path(__file__).with_name("LANGUAGE")
+
+
+@cache
+def package_language() -> str:
+    """The language of the messages: the first line of LANGUAGE_FILE, "en" without it."""
+    try:
+        text = LANGUAGE_FILE.read_text(encoding="utf-8").strip()
+    except FileNotFoundError:
+        return "en"
+    return text.splitlines()[0].strip() if text else "en"
+
+
+@dataclass(frozen=True)
+class _Texts:
+    language: str
+    templates: dict[str, str]
+    kinds: dict[type, str]
+    other_kind: str
+    messages: dict[str, str] = field(default_factory=dict)
+
+    def translate(self, text: str) -> str:
+        # An exercise changed since the translation: its English text beats no message.
+        return self.messages.get(text, text)
+
+    def kind_words(self, kind: type) -> str:
+        return self.kinds.get(kind, self.other_kind.format(kind=kind.__name__))
+
+
+@cache
+def _texts(language: str) -> _Texts:
+    if language == "en":
+        # English is this module's own: a package without _<language>.py modules works.
+        return _Texts("en", ENGLISH, ENGLISH_KINDS, ENGLISH_OTHER_KIND)
+    if not language.isidentifier():
+        raise ValueError(f"no self-check messages in the language {language!r}")
+    try:
+        module = importlib.import_module(f"._{language}", __package__)
+    except ModuleNotFoundError:
+        raise ValueError(f"no self-check messages in the language {language!r}") from None
+    return _Texts(language, module.TEMPLATES, module.KINDS, module.OTHER_KIND, module.MESSAGES)
 
 
 def _show(text: str) -> None:

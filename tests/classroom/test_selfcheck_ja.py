@@ -1,0 +1,320 @@
+"""The self-checks in Japanese (tools/classroom/selfcheck/_ja.py), and English unchanged.
+
+The Japanese notebooks ship the package with a LANGUAGE file (bundle.copy_selfcheck), and
+then judge and check must say everything in Japanese: the exercises' texts through MESSAGES,
+the core's sentences through TEMPLATES. Without the file they must say exactly what they
+said before the package had languages, and not even import _ja.py.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+import string
+import subprocess
+import sys
+from collections import Counter
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from tools.classroom import bundle, selfcheck
+from tools.classroom.selfcheck import _core, _ja
+
+VALUES = [(label, value) for label, ex in sorted(selfcheck.EXERCISES.items())
+          for value in ex.values]
+HINTS = [(label, value, i) for label, value in VALUES for i in range(len(value.hints))]
+# The formulas, names and MyST roles a translation must carry over as they are; a role first,
+# so that its backticked target is not taken for a name.
+SPAN = re.compile(r"\{[\w:-]+\}`[^`]*`|`[^`]*`|\$[^$]*\$")
+JAPANESE = re.compile(r"[\u3040-\u30ff\u4e00-\u9fff]")
+
+
+def _texts_of_exercises() -> set[str]:
+    return {text for _, value in VALUES for text in (value.what, *(h.message for h in value.hints))}
+
+
+def _placeholders(template: str) -> Counter[str]:
+    return Counter(field for _, field, _, _ in string.Formatter().parse(template)
+                   if field is not None)
+
+
+def _english_fragments() -> list[str]:
+    # The literal words of each English template, between its placeholders: none of them
+    # may be left in a Japanese message.
+    found = []
+    for template in (*_core.ENGLISH.values(), *_core.ENGLISH_KINDS.values()):
+        for literal, _, _, _ in string.Formatter().parse(template):
+            words = literal.strip(" .:()")
+            if len(words) >= 4:
+                found.append(words)
+    return found
+
+
+# --- English as before -------------------------------------------------------------------
+# The reference: judge, _kind_words and check's sentences copied from _core.py as they were
+# before the package had languages (the English templates of today, written out as
+# f-strings), so that any change to what an English notebook prints fails here.
+
+def _kind_words_before(kind: type) -> str:
+    return {float: "a number", int: "a whole number", bool: "True or False",
+            str: "a string"}.get(kind, f"a {kind.__name__}")
+
+
+def _judge_before(value: selfcheck.Value, answer: Any, want: Any) -> tuple[bool, str]:
+    name = f"`{value.name}`"
+    if answer is Ellipsis:
+        return False, f"{name} is still `...`: put your answer ({value.what}) in its place."
+    try:
+        got = _core._as_kind(value, answer)
+    except (TypeError, ValueError, OverflowError):
+        shown = type(answer).__name__
+        return False, (f"{name} should be {_kind_words_before(value.kind)} ({value.what}), "
+                       f"not the {shown} {answer!r:.60}.")
+    if value.kind is float:
+        right = value.close(got, want, value.rtol)
+    else:
+        right = got == want
+    if right:
+        return True, f"{name} is right."
+    for hint in value.hints:
+        try:
+            matched = bool(hint.when(got, want))
+        except (TypeError, ValueError, ArithmeticError):
+            matched = False
+        if matched:
+            return False, f"{name} is not right yet. {hint.message}"
+    if value.kind is float:
+        if want != 0 and got != 0 and math.copysign(1, got) != math.copysign(1, want):
+            return False, f"{name} has the wrong sign."
+        if want != 0:
+            off = (abs(got) - abs(want)) / abs(want)
+            size = "too large" if off > 0 else "too small"
+            size += " in magnitude" if want < 0 else ""
+            return False, f"{name} is {100 * abs(off):.2g}% {size}."
+    return False, f"{name} is not right yet: look again at {value.what}."
+
+
+def _report_before(label: str, answers: dict[str, Any]) -> tuple[bool, str]:
+    want = selfcheck.expected(label)
+    lines, ok = [], True
+    for value in selfcheck.EXERCISES[label].values:
+        if value.name not in answers:
+            right, message = False, f"`{value.name}` is missing: pass {value.name}={value.name}."
+        else:
+            right, message = _judge_before(value, answers[value.name], want[value.name])
+        ok &= right
+        lines.append(f"{'✔' if right else '✘'} {message}")
+    if ok:
+        lines.append("All right.")
+    return ok, "\n\n".join(lines)
+
+
+def _wrong_answers(value: selfcheck.Value, want: Any) -> list[Any]:
+    # Every branch of judge: each hint's example, the untouched cell, an answer of the wrong
+    # kind, and (numbers) off by a few percent either way and of the wrong sign.
+    answers: list[Any] = [h.example(want) for h in value.hints]
+    answers += [..., "abc", [1.0, 2.0], None]
+    if value.kind is float:
+        answers += [want * 1.03, want * 0.97, -want, want + 0.5, float("nan"), 0.0, want]
+    elif value.kind is int:
+        answers += [want + 1, want - 1, 2.5, want]
+    elif value.kind is bool:
+        answers += [not want, 1, want]
+    return answers
+
+
+@pytest.mark.parametrize(("label", "value"), VALUES, ids=[f"{lab}-{v.name}" for lab, v in VALUES])
+def test_english_judge_says_what_it_said_before(label, value) -> None:
+    want = selfcheck.expected(label)[value.name]
+    for answer in _wrong_answers(value, want):
+        before = _judge_before(value, answer, want)
+        assert _core.judge(value, answer, want) == before, answer
+        assert _core.judge(value, answer, want, language="en") == before, answer
+
+
+def test_english_check_says_what_it_said_before(capsys) -> None:
+    # The same reference for whole reports: all right, one wrong, one missing.
+    assert _core.package_language() == "en", "the package folder holds a LANGUAGE file"
+    for label, exercise in sorted(selfcheck.EXERCISES.items()):
+        if not exercise.values:
+            continue
+        right = dict(selfcheck.expected(label))
+        first = exercise.values[0]
+        wrong = dict(right, **{first.name: _wrong_answers(first, right[first.name])[0]})
+        missing = {k: v for k, v in right.items() if k != first.name}
+        for answers in (right, wrong, missing):
+            before = _report_before(label, answers)
+            assert _core.report(label, answers) == before
+            assert selfcheck.check(label, **answers) is before[0]
+            assert capsys.readouterr().out == before[1] + "\n"
+
+
+# --- The Japanese texts ------------------------------------------------------------------
+
+def test_every_text_of_every_exercise_has_japanese_and_no_other() -> None:
+    # The texts come from the registry (the chapter modules); MESSAGES from _ja.py. A text
+    # changed in a chapter module shows up here twice: untranslated, and stale.
+    texts = _texts_of_exercises()
+    assert sorted(texts - set(_ja.MESSAGES)) == [], "texts without Japanese"
+    assert sorted(set(_ja.MESSAGES) - texts) == [], "Japanese for texts no exercise has"
+
+
+@pytest.mark.parametrize(("english", "japanese"), sorted(_ja.MESSAGES.items()),
+                         ids=[f"{i}" for i in range(len(_ja.MESSAGES))])
+def test_japanese_keeps_the_formulas_names_and_roles(english, japanese) -> None:
+    # The English text is the reference: the notebook typesets and links the same spans.
+    assert Counter(SPAN.findall(japanese)) == Counter(SPAN.findall(english))
+    assert not re.search(r"[$`]", SPAN.sub("", japanese)), "an unbalanced $ or backtick"
+    assert JAPANESE.search(SPAN.sub("", japanese)), "no Japanese outside the spans"
+    assert japanese == japanese.strip() and "  " not in japanese
+
+
+def test_japanese_templates_have_the_english_placeholders() -> None:
+    # _core.ENGLISH is the reference: judge fills the same names into either language.
+    assert set(_ja.TEMPLATES) == set(_core.ENGLISH)
+    for key, template in _ja.TEMPLATES.items():
+        assert _placeholders(template) == _placeholders(_core.ENGLISH[key]), key
+        assert JAPANESE.search(template), key
+    assert set(_ja.KINDS) == set(_core.ENGLISH_KINDS)
+    assert _placeholders(_ja.OTHER_KIND) == _placeholders(_core.ENGLISH_OTHER_KIND)
+
+
+def _english_left(message: str) -> list[str]:
+    return [words for words in _english_fragments() if words in message]
+
+
+@pytest.mark.parametrize(("label", "value", "i"), HINTS,
+                         ids=[f"{lab}-{v.name}-{i}" for lab, v, i in HINTS])
+def test_each_hint_answers_its_own_mistake_in_japanese(label, value, i) -> None:
+    # The hint English picks for the example (the English message names it) is the one whose
+    # Japanese the Japanese message must hold, after the Japanese sentence of a hint.
+    want = selfcheck.expected(label)[value.name]
+    wrong = value.hints[i].example(want)
+    right_en, said_en = _core.judge(value, wrong, want, language="en")
+    picked = [h for h in value.hints
+              if said_en == _core.ENGLISH["hint"].format(name=f"`{value.name}`", hint=h.message)]
+    assert not right_en and picked, said_en
+    right_ja, said_ja = _core.judge(value, wrong, want, language="ja")
+    assert not right_ja
+    assert said_ja == _ja.TEMPLATES["hint"].format(name=f"`{value.name}`",
+                                                   hint=_ja.MESSAGES[picked[0].message])
+    assert _english_left(said_ja) == []
+
+
+@pytest.mark.parametrize(("label", "value"), VALUES, ids=[f"{lab}-{v.name}" for lab, v in VALUES])
+def test_every_other_verdict_is_japanese(label, value) -> None:
+    # Each branch of judge (the answers of _wrong_answers) in Japanese: no sentence of the
+    # English templates is left, and a message that names the value names it in Japanese.
+    want = selfcheck.expected(label)[value.name]
+    for answer in _wrong_answers(value, want):
+        right_en, said_en = _core.judge(value, answer, want, language="en")
+        right_ja, said_ja = _core.judge(value, answer, want, language="ja")
+        assert right_ja is right_en, answer
+        assert _english_left(said_ja) == [], (answer, said_ja)
+        assert JAPANESE.search(said_ja), said_ja
+        if value.what in said_en:
+            assert _ja.MESSAGES[value.what] in said_ja, said_ja
+    _, untouched = _core.judge(value, ..., want, language="ja")
+    assert untouched.startswith(f"`{value.name}` はまだ `...` のまま")
+
+
+def test_a_value_three_percent_off_is_called_so_in_japanese() -> None:
+    # The wording is _ja.TEMPLATES' own (大きすぎる / 小さすぎる, 絶対値 for a negative value).
+    value = selfcheck.Value("x", "the speed $v^*$ that separates swinging back from going "
+                                 "over the top, from $\\theta(0) = 2$")
+    assert _core.judge(value, 1.03, 1.0, language="ja") == (False, "`x` は 3% 大きすぎる。")
+    assert _core.judge(value, 0.97, 1.0, language="ja") == (False, "`x` は 3% 小さすぎる。")
+    assert _core.judge(value, -1.03, -1.0, language="ja") == (
+        False, "`x` は絶対値が 3% 大きすぎる。")
+    assert _core.judge(value, -1.0, 1.0, language="ja") == (False, "`x` は符号が逆である。")
+    assert _core.judge(value, 1.0, 1.0, language="ja") == (True, "`x` は正しい。")
+
+
+def test_a_whole_japanese_report() -> None:
+    # What check prints for an exercise of two values: _ja.TEMPLATES for the core's
+    # sentences, MESSAGES for the exercise's texts.
+    label = "ex-equation-period"
+    values = selfcheck.EXERCISES[label].values
+    right = dict(selfcheck.expected(label))
+    ok, text = _core.report(label, right, language="ja")
+    assert ok and text.endswith("すべて正しい。")
+    assert text.count("は正しい。") == len(values)
+    first = values[0].name
+    ok, text = _core.report(label, {k: v for k, v in right.items() if k != first},
+                            language="ja")
+    assert not ok
+    assert f"✘ `{first}` が渡されていない。{first}={first} として渡すこと。" in text
+    assert "すべて正しい。" not in text and _english_left(text) == []
+
+
+def test_an_unknown_language_is_a_clear_error() -> None:
+    value = selfcheck.EXERCISES["ex-energy-threshold"].values[0]
+    with pytest.raises(ValueError, match="no self-check messages"):
+        _core.judge(value, 1.0, 1.0, language="xx")
+    with pytest.raises(ValueError, match="no self-check messages"):
+        _core.judge(value, 1.0, 1.0, language="../en")
+    with pytest.raises(ValueError, match="no messages"):
+        bundle.copy_selfcheck(Path("/nonexistent"), "xx")
+
+
+def test_the_language_file_is_read(tmp_path, monkeypatch, capsys) -> None:
+    # The file's first line names the language (_core.package_language); an absent file
+    # means English. The file is put in tmp_path, not into the package folder.
+    monkeypatch.setattr(_core, "LANGUAGE_FILE", tmp_path / "LANGUAGE")
+    _core.package_language.cache_clear()
+    try:
+        assert _core.package_language() == "en"
+        _core.package_language.cache_clear()
+        (tmp_path / "LANGUAGE").write_text("ja\n", encoding="utf-8")
+        assert _core.package_language() == "ja"
+        assert selfcheck.check("ex-energy-threshold", v_star=...) is False
+        assert "`v_star` はまだ `...` のままである。" in capsys.readouterr().out
+    finally:
+        _core.package_language.cache_clear()
+
+
+# --- The bundle's copy -------------------------------------------------------------------
+
+def _run_check(folder: Path, code: str) -> subprocess.CompletedProcess[str]:
+    # As a notebook's kernel imports it: from the folder the notebooks are in.
+    return subprocess.run([sys.executable, "-c", code], cwd=folder, capture_output=True,
+                          text=True, timeout=300, encoding="utf-8")
+
+
+CHECK = ("import sys\n"
+         "from selfcheck import check\n"
+         "check('ex-energy-threshold', v_star={v_star!r})\n"
+         "check('ex-energy-threshold', v_star=...)\n"
+         "print('imported _ja:', 'selfcheck._ja' in sys.modules)\n")
+
+
+def test_the_japanese_bundle_prints_japanese(tmp_path) -> None:
+    # The expected text is the in-process report in "ja" (tested above); the copy must
+    # choose it by its LANGUAGE file alone.
+    target = bundle.copy_selfcheck(tmp_path, "ja")
+    assert (target / "LANGUAGE").read_text(encoding="utf-8") == "ja\n"
+    v_star = selfcheck.expected("ex-energy-threshold")["v_star"]
+    run = _run_check(tmp_path, CHECK.format(v_star=v_star))
+    assert run.returncode == 0, run.stderr
+    right = _core.report("ex-energy-threshold", {"v_star": v_star}, language="ja")[1]
+    untouched = _core.report("ex-energy-threshold", {"v_star": ...}, language="ja")[1]
+    assert run.stdout == f"{right}\n{untouched}\nimported _ja: True\n"
+    assert "すべて正しい。" in run.stdout
+
+
+def test_the_english_bundle_prints_english_without_the_japanese_module(tmp_path) -> None:
+    # English as before (the reference of _report_before), with _ja.py neither imported nor
+    # needed: the copy works with it deleted.
+    target = bundle.copy_selfcheck(tmp_path, "ja")
+    target = bundle.copy_selfcheck(tmp_path)  # a copy over a Japanese one leaves no LANGUAGE
+    assert not (target / "LANGUAGE").exists()
+    (target / "_ja.py").unlink()
+    v_star = selfcheck.expected("ex-energy-threshold")["v_star"]
+    run = _run_check(tmp_path, CHECK.format(v_star=v_star))
+    assert run.returncode == 0, run.stderr
+    right = _report_before("ex-energy-threshold", {"v_star": v_star})[1]
+    untouched = _report_before("ex-energy-threshold", {"v_star": ...})[1]
+    assert run.stdout == f"{right}\n{untouched}\nimported _ja: False\n"
+    assert "All right." in run.stdout
