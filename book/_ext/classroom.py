@@ -208,10 +208,16 @@ def _export(app: Sphinx, exception: BaseException | None) -> None:
         _stripped_sources(app)
     out = Path(app.outdir) / FOLDER
     editions = _editions(app)
+    # The values myst-nb glued: a translated edition inside a site reads the English
+    # build's (the same cells, the same cache), whose folder holds every page; its own
+    # holds only the pages it read this time, and is removed after (book/_ext/i18n.py).
+    site = Path(app.outdir).parent
+    inside = _language(app) != "en" and (site / "index.html").exists()
+    glue = (site.parent if inside else site) / "jupyter_execute"
     try:
         export_notebooks.export(
-            Path(app.srcdir), out, glue_from=Path(app.outdir).parent / "jupyter_execute",
-            editions=editions, language=_language(app),
+            Path(app.srcdir), out, glue_from=glue, editions=editions,
+            language=_language(app),
         )
     except ValueError as err:  # a page the exporter cannot translate: say which, and why
         logger.warning(f"classroom notebooks not exported: {err}", type="classroom")

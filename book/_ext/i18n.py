@@ -24,11 +24,18 @@ here:
 * Interface strings that the packages lack in Japanese: myst-nb's code-cell toggles, the
   theme's search box, sphinx-exercise's "Solution" (and its title order, "演習 3 の解答").
   Strings of our templates and of sphinx-exercise come from our own catalogs,
-  ``locale/<lang>/LC_MESSAGES/sphinx.po`` and ``exercise.po``.
+  ``locale/<lang>/LC_MESSAGES/sphinx.po`` and ``exercise.po``; those that Sphinx and the
+  theme have in their own ja catalogs but leave empty (the permalinks' "Link to this
+  heading", the colour switch) from ``locale/packages``; three of the theme's templates that
+  write English without the catalogs (the sidebar toggles, the navigation's name) are ours,
+  with ``_()``.
+* The animation player's controls (matplotlib's ``to_jshtml``), which are interface inside
+  an output: their titles and labels in the page's language.
 """
 
 from __future__ import annotations
 
+import re
 import shutil
 from pathlib import Path
 from typing import Any
@@ -41,6 +48,10 @@ from sphinx.transforms import SphinxTransform
 from sphinx.transforms.post_transforms import SphinxPostTransform
 
 LOCALE = Path(__file__).resolve().parents[1] / "locale"
+# Japanese for strings of Sphinx and the theme that their own catalogs leave empty, in the
+# "sphinx" domain; added after theirs, so it fills only their gaps. Kept out of LOCALE's
+# language folders: our sphinx.po there is the templates' catalog, which i18n-update merges.
+PACKAGES = LOCALE / "packages"
 # The editions and where each one's site lies, relative to the English site's root.
 EDITIONS = {"en": ".", "ja": "ja"}
 NAMES = {"en": "English", "ja": "日本語"}
@@ -75,6 +86,20 @@ LABELS = {
         "Download this page": "このページをダウンロード",
     },
 }
+
+
+# The controls of matplotlib's animation player (an output's HTML, Animation.to_jshtml):
+# its button titles, aria labels and the labels of its repetition modes.
+PLAYER = {
+    "ja": {
+        "Frame": "コマ", "Decrease speed": "遅くする", "First frame": "最初のコマ",
+        "Previous frame": "前のコマ", "Play backwards": "逆再生", "Pause": "一時停止",
+        "Play": "再生", "Next frame": "次のコマ", "Last frame": "最後のコマ",
+        "Increase speed": "速くする", "Repetition mode": "繰り返し方",
+        "Once": "1 回", "Loop": "ループ", "Reflect": "往復",
+    },
+}
+_PLAYER_TEXT = re.compile(r'(?P<head>(?:title|aria-label)="|<label for="[^"]*">)(?P<text>[^"<]+)')
 
 
 def label(language: str | None, text: str) -> str:
@@ -189,6 +214,28 @@ class SolutionTitle(SphinxPostTransform):
                     first.replace(first.children[0], nodes.Text(str(first.children[0]).lstrip()))
 
 
+class PlayerControls(SphinxPostTransform):
+    """The animation player's controls in the page's language.
+
+    They are interface, not a result: the frames, the numbers of the output, stay as run.
+    """
+
+    default_priority = 999
+
+    def run(self, **kwargs: Any) -> None:
+        """Rewrite the controls of each animation output."""
+        words = PLAYER.get(self.config.language or "en")
+        if not words:
+            return
+        for raw in list(self.document.findall(nodes.raw)):
+            text = raw.astext()
+            if "anim-controls" not in text:
+                continue
+            new = _PLAYER_TEXT.sub(
+                lambda m: m["head"] + words.get(m["text"], m["text"]), text)
+            raw.replace_self(nodes.raw("", new, format=raw.get("format", "html")))
+
+
 def _configure(app: Sphinx, config: Config) -> None:
     for name, value in INTERFACE.get(config.language, {}).items():
         if name == "search_bar_text":
@@ -217,15 +264,17 @@ def _language_links(
 
 
 def _compile_own_catalogs(language: str) -> None:
-    """Compile our catalogs of other packages' strings (exercise.po) to the .mo gettext reads.
+    """Compile our catalogs of other packages' strings to the .mo files gettext reads.
 
-    Sphinx compiles only the pages' catalogs, and later than extensions load theirs.
+    exercise.po, and packages/'s sphinx.po. Sphinx compiles only the pages' catalogs, and
+    later than extensions load theirs.
     """
     from babel.messages.mofile import write_mo
     from babel.messages.pofile import read_po
 
     folder = LOCALE / language / "LC_MESSAGES"
-    for po in folder.glob("exercise.po"):
+    packages = PACKAGES / language / "LC_MESSAGES"
+    for po in [*folder.glob("exercise.po"), *packages.glob("sphinx.po")]:
         mo = po.with_suffix(".mo")
         if not mo.exists() or mo.stat().st_mtime < po.stat().st_mtime:
             with po.open("rb") as src:
@@ -257,9 +306,11 @@ def setup(app: Sphinx) -> dict[str, Any]:
     app.add_source_parser(Parser, override=True)
     app.add_transform(Untranslatable)
     app.add_post_transform(SolutionTitle)
+    app.add_post_transform(PlayerControls)
     if app.config.language and app.config.language != "en":
         _compile_own_catalogs(app.config.language)
         app.add_message_catalog("exercise", str(LOCALE))
+        app.add_message_catalog("sphinx", str(PACKAGES))
     app.connect("config-inited", _configure)
     app.connect("html-page-context", _language_links)
     app.connect("build-finished", _drop_executed_notebooks, priority=900)

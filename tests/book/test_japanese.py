@@ -79,8 +79,10 @@ class _Text(HTMLParser):
         if "pasted-text" in classes:
             self.pasted.append(data.strip())
         elif "cell_output" in classes:
-            # Captions are translated, and so are the titles of the pages an output links to.
-            if data.strip() and not tags & {"figcaption", "caption", "a"}:
+            # Captions are translated, and so are the titles of the pages an output links to
+            # and the animation player's controls (interface, book/_ext/i18n.py).
+            if data.strip() and not tags & {"figcaption", "caption", "a"} and (
+                    "anim-state" not in classes):
                 self.outputs.append(data.strip())
         elif not (tags & self.SAME or "math" in classes.split()):
             self.prose.append(data)
@@ -159,6 +161,16 @@ def test_interface_strings_are_japanese(book_ja_build: Build) -> None:
     assert "コードを表示" in html  # myst-nb's code-cell toggle
     assert "本書を検索" in html  # the theme's search box
     assert ">図 " in html and ">演習 " in html
+    # Sphinx's permalinks, the theme's sidebar toggles and colour switch, from our catalogs
+    # (book/locale/ja/LC_MESSAGES/sphinx.po, book/locale/packages).
+    for japanese in ("この見出しへのリンク", "目次の表示を切り替える", "システム設定に従う"):
+        assert japanese in html, japanese
+    for english in ("Link to this heading", "Toggle primary sidebar", "System Settings",
+                    "Color mode"):
+        assert english not in html, english
+    player = (_ok(book_ja_build) / "in_motion.html").read_text(encoding="utf-8")
+    assert 'title="再生"' in player and ">往復</label>" in player
+    assert 'title="Play"' not in player and ">Reflect<" not in player
 
 
 def test_every_message_is_translated_and_whole(gettext_build: Build) -> None:
