@@ -72,9 +72,10 @@ def background() -> Iterator[ThreadPoolExecutor]:
 
     A browser spends much of a page waiting (loads, MathJax's timers): across the tier one
     of the two cores sat idle about half the time, so the survey's fixture starts the PDFs
-    here, and the PDF tests take the result when their turn comes.
+    and nbgrader's run here (nbgrader's venv is mostly pip waiting for downloads), and their
+    tests take the results when their turn comes.
     """
-    with ThreadPoolExecutor(max_workers=1) as pool:
+    with ThreadPoolExecutor(max_workers=2) as pool:
         yield pool
 
 
@@ -93,3 +94,13 @@ def pdf_job(background: ThreadPoolExecutor, tmp_path_factory: pytest.TempPathFac
     env = {"ELLIPTIC_PENDULUM_DOCS_HTML": str(docs_build.outdir)}
     return background.submit(
         lambda: (out, build_pdf.build(BOOK, out, execution_cache, env, workers=2)))
+
+
+@pytest.fixture(scope="session")
+def nbgrader_job(background: ThreadPoolExecutor, built_book: Path,
+                 tmp_path_factory: pytest.TempPathFactory) -> Future:
+    """nbgrader's own run of the course made from the book's instructor notebooks
+    (tests/book/test_nbgrader.py): a Future of what its tests look at."""
+    from tests.book.test_nbgrader import grade
+
+    return background.submit(grade, built_book, tmp_path_factory)

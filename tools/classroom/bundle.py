@@ -225,7 +225,7 @@ def _readme_ja(edition: str, notebooks: list[str]) -> str:
     zip_name = folder + ".zip"
     first = notebooks[0] if notebooks else "最初のノートブック"
     content = ("全章とその演習（各演習の下に、答えを書くセルと、結果が正しいかどうかを教える"
-               "セルフチェックがある）" if edition == "student" else "全章とその演習、演習の解答")
+               "自己チェックがある）" if edition == "student" else "全章とその演習、演習の解答")
     kind = "学生用" if edition == "student" else "教員用"
     wheel = wheel_name()
     return f"""\
@@ -234,7 +234,7 @@ def _readme_ja(edition: str, notebooks: list[str]) -> str:
 このフォルダには、本書『{TITLE_JA}』を Jupyter ノートブックにしたもの、すなわち{content}が
 入っている。`{first}` が章の一覧である。ノートブックは Python パッケージ `elliptic_pendulum`
 を使う。このパッケージはパッケージインデックスにはなく、このフォルダのファイル `{wheel}` が
-それである。フォルダ `{SELFCHECK}` には演習のセルフチェックが入っており、ノートブックはこれを
+それである。フォルダ `{SELFCHECK}` には演習の自己チェックが入っており、ノートブックはこれを
 同じ場所から読み込む（ノートブックと同じフォルダに置いたままにすること）。`{REQUIREMENTS}` には、
 ノートブックが使うそのほかのパッケージ（NumPy、SciPy、SymPy、Matplotlib、mpmath、スライダー用の
 ipywidgets）と、ノートブックを開くための JupyterLab が並んでいる。
