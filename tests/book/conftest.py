@@ -72,10 +72,10 @@ def background() -> Iterator[ThreadPoolExecutor]:
 
     A browser spends much of a page waiting (loads, MathJax's timers): across the tier one
     of the two cores sat idle about half the time, so the survey's fixture starts the PDFs
-    and nbgrader's run here (nbgrader's venv is mostly pip waiting for downloads), and their
-    tests take the results when their turn comes.
+    and nbgrader's run here, and the classroom bundles' venv (both venvs are mostly pip
+    waiting for downloads); their tests take the results when their turn comes.
     """
-    with ThreadPoolExecutor(max_workers=2) as pool:
+    with ThreadPoolExecutor(max_workers=3) as pool:
         yield pool
 
 
@@ -104,3 +104,20 @@ def nbgrader_job(background: ThreadPoolExecutor, built_book: Path,
     from tests.book.test_nbgrader import grade
 
     return background.submit(grade, built_book, tmp_path_factory)
+
+
+@pytest.fixture(scope="session")
+def bundle_job(background: ThreadPoolExecutor, built_book: Path, student_book: Build,
+               tmp_path_factory: pytest.TempPathFactory) -> Future:
+    """The classroom zips of both sites unpacked alone, and a fresh venv that their READMEs'
+    install command filled (tests/book/test_notebooks.py): a Future of (folders, venv)."""
+    from tests.book.test_notebooks import make_bundle_venv, unzip_bundles
+
+    if student_book.returncode != 0:
+        pytest.fail("the student site did not build; see test_student_book", pytrace=False)
+
+    def job() -> tuple[dict[str, Path], Path]:
+        folders = unzip_bundles(built_book, student_book.outdir, tmp_path_factory)
+        return folders, make_bundle_venv(folders, tmp_path_factory)
+
+    return background.submit(job)

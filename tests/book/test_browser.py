@@ -436,8 +436,9 @@ def look_at(
 
 @pytest.fixture(scope="module")
 def folders(built_book: Path, built_docs: Path, book_ja_build, pdf_job,
-            nbgrader_job) -> dict[str, Path]:
-    # The PDFs and nbgrader's run are made while the browsers survey (tests/book/conftest.py).
+            nbgrader_job, bundle_job) -> dict[str, Path]:
+    # The PDFs, nbgrader's run and the bundles' venv are made while the browsers survey
+    # (tests/book/conftest.py).
     if book_ja_build.returncode != 0:
         pytest.fail("the Japanese edition did not build; see test_japanese", pytrace=False)
     return {"book": built_book, "ja": book_ja_build.outdir, "docs": built_docs}

@@ -19,6 +19,7 @@ import sys
 import textwrap
 import time
 import zipfile
+from concurrent.futures import Future
 from pathlib import Path
 
 import jupytext
@@ -40,13 +41,10 @@ KERNEL = "bundle-venv"
 TIMES = SUMMARY.setdefault("classroom bundles", [])
 
 
-@pytest.fixture(scope="session")
-def bundles(built_book: Path, student_book: Build,
-            tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
+def unzip_bundles(built_book: Path, student_site: Path,
+                  tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
     """edition -> the folder its zip unpacks to, each zip alone in an empty folder."""
-    if student_book.returncode != 0:
-        pytest.fail("the student site did not build; see test_student_book", pytrace=False)
-    sites = {"student": student_book.outdir, "instructor": built_book}
+    sites = {"student": student_site, "instructor": built_book}
     folders = {}
     for edition, site in sites.items():
         archive = site / "classroom" / f"{bundle.bundle_name(edition)}.zip"
@@ -71,8 +69,7 @@ def readme_install(folder: Path) -> list[str]:
     return shlex.split(lines[0])
 
 
-@pytest.fixture(scope="session")
-def bundle_venv(bundles: dict[str, Path], tmp_path_factory: pytest.TempPathFactory) -> Path:
+def make_bundle_venv(bundles: dict[str, Path], tmp_path_factory: pytest.TempPathFactory) -> Path:
     """A fresh venv with ipykernel, then each README's install command run in its bundle
     (the student's first; the instructor's then finds all installed), and its kernel spec."""
     start = time.perf_counter()
@@ -92,6 +89,18 @@ def bundle_venv(bundles: dict[str, Path], tmp_path_factory: pytest.TempPathFacto
     TIMES.append(f"fresh venv, ipykernel and the READMEs' install: "
                  f"{time.perf_counter() - start:.1f} s")
     return venv
+
+
+@pytest.fixture(scope="session")
+def bundles(bundle_job: Future) -> dict[str, Path]:
+    """edition -> its unzipped bundle (made beside the browser survey: tests/book/conftest.py)."""
+    return dict(bundle_job.result()[0])
+
+
+@pytest.fixture(scope="session")
+def bundle_venv(bundle_job: Future) -> Path:
+    """The fresh venv the bundles' READMEs installed into (see bundles)."""
+    return Path(bundle_job.result()[1])
 
 
 def _kernel_dirs(venv: Path) -> list[str]:
