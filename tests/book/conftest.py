@@ -72,8 +72,8 @@ def background() -> Iterator[ThreadPoolExecutor]:
 
     A browser spends much of a page waiting (loads, MathJax's timers): across the tier one
     of the two cores sat idle about half the time, so the survey's fixture starts the PDFs
-    and nbgrader's run here, and the classroom bundles' venv (both venvs are mostly pip
-    waiting for downloads); their tests take the results when their turn comes.
+    and nbgrader's run here, and the classroom bundles' venv and notebooks (both venvs are
+    mostly pip waiting for downloads); their tests take the results when their turn comes.
     """
     with ThreadPoolExecutor(max_workers=3) as pool:
         yield pool
@@ -109,15 +109,17 @@ def nbgrader_job(background: ThreadPoolExecutor, built_book: Path,
 @pytest.fixture(scope="session")
 def bundle_job(background: ThreadPoolExecutor, built_book: Path, student_book: Build,
                tmp_path_factory: pytest.TempPathFactory) -> Future:
-    """The classroom zips of both sites unpacked alone, and a fresh venv that their READMEs'
-    install command filled (tests/book/test_notebooks.py): a Future of (folders, venv)."""
-    from tests.book.test_notebooks import make_bundle_venv, unzip_bundles
+    """The classroom zips of both sites unpacked alone, a fresh venv that their READMEs'
+    install command filled, and every notebook run in it (tests/book/test_notebooks.py):
+    a Future of (folders, venv, executed notebooks)."""
+    from tests.book.test_notebooks import make_bundle_venv, run_all, unzip_bundles
 
     if student_book.returncode != 0:
         pytest.fail("the student site did not build; see test_student_book", pytrace=False)
 
-    def job() -> tuple[dict[str, Path], Path]:
+    def job() -> tuple[dict[str, Path], Path, dict]:
         folders = unzip_bundles(built_book, student_book.outdir, tmp_path_factory)
-        return folders, make_bundle_venv(folders, tmp_path_factory)
+        venv = make_bundle_venv(folders, tmp_path_factory)
+        return folders, venv, run_all(folders, venv)
 
     return background.submit(job)

@@ -145,7 +145,13 @@ def _run(folder: Path, name: str, venv: Path) -> tuple[nbformat.NotebookNode, fl
 
 
 @pytest.fixture(scope="session")
-def executed(bundles: dict[str, Path], bundle_venv: Path) -> dict[tuple[str, str], object]:
+def executed(bundle_job: Future) -> dict[tuple[str, str], object]:
+    """Every notebook of both editions run in the bundle's venv (see run_all), beside the
+    browser survey (tests/book/conftest.py)."""
+    return dict(bundle_job.result()[2])
+
+
+def run_all(bundles: dict[str, Path], bundle_venv: Path) -> dict[tuple[str, str], object]:
     """Every notebook of both editions run in the bundle's venv, two at a time (each has its
     own kernel, a process of its own: the machine's two cores run two): (page, edition) ->
     the executed notebook, or the exception its run raised."""
