@@ -169,14 +169,14 @@ class Motion:
     def __repr__(self) -> str:
         """Return a one-line summary: the initial state, its regime, c1, size and period.
 
-        (The examples wrap the line; doctest compares whitespace loosely.)
-
         Examples
         --------
-        >>> solve(0.5)
+        The line is wrapped here to fit the page; the directive tells doctest so.
+
+        >>> solve(0.5)  # doctest: +NORMALIZE_WHITESPACE
         Motion(regime='II', theta0=0.5, dtheta0=0, omega0=1, c1=-1.755165124,
                amplitude=0.5, period=6.382789698)
-        >>> solve(0.0, 3.0)
+        >>> solve(0.0, 3.0)  # doctest: +NORMALIZE_WHITESPACE
         Motion(regime='IV', theta0=0, dtheta0=3, omega0=1, c1=7, gamma=0.6666666667,
                period=2.412889994)
         >>> solve([0.5, 0.0], [0.0, 3.0])

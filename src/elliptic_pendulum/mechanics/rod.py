@@ -241,10 +241,10 @@ class Pendulum:
         Examples
         --------
         >>> p = Pendulum(length=1.5, g=10.0, mass=2.0)
-        >>> p.energy(p.solve(0.0)) / (p.mass * p.g * p.length)
+        >>> round(p.energy(p.solve(0.0)) / (p.mass * p.g * p.length), 12)
         -1.0
-        >>> round(p.energy(p.solve(math.pi / 2)), 12)
-        0.0
+        >>> abs(p.energy(p.solve(math.pi / 2))) < 1e-12   # released at the horizontal
+        True
         """
         self._check(motion)
         c1 = motion.energy_constant
