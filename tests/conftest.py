@@ -19,6 +19,14 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
+from hypothesis import settings
+
+# The property tests give the same answer on every run: hypothesis draws its examples from a
+# fixed seed (a red run means changed behaviour, never a new draw) and keeps no database.
+# HYPOTHESIS_PROFILE=explore draws fresh examples, for a developer hunting for new failures.
+settings.register_profile("deterministic", derandomize=True, database=None)
+settings.register_profile("explore", derandomize=False)
+settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "deterministic"))
 
 ROOT = Path(__file__).resolve().parents[1]
 BOOK = ROOT / "book"
