@@ -5,9 +5,9 @@ import textwrap
 
 import pytest
 
-from elliptic_pendulum import registry
+from elliptic_pendulum.checks import registry
+from elliptic_pendulum.checks.identities import identities
 from elliptic_pendulum.checks.registry import _RANGE
-from elliptic_pendulum.symbolic import identities
 from tests.conftest import ROOT
 
 BOOK = ROOT / "book"

@@ -7,8 +7,9 @@ import math
 import pytest
 import sympy as sp
 
-from elliptic_pendulum import verify
-from elliptic_pendulum.symbolic import Identity, identity
+from elliptic_pendulum.checks import verify
+from elliptic_pendulum.checks.identities import identity
+from elliptic_pendulum.checks.symbolic import Identity
 
 x = sp.Symbol("x", real=True)
 

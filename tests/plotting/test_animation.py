@@ -13,7 +13,7 @@ import pytest
 from matplotlib import pyplot as plt
 
 import elliptic_pendulum as ep
-from elliptic_pendulum.animation import animate, animation_html
+from elliptic_pendulum.plotting.animation import animate, animation_html
 
 MOTIONS = [ep.solve(0.0), ep.solve(2.0), ep.solve(0.0, 2.0), ep.solve(0.3, -2.6, 1.5)]
 

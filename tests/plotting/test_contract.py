@@ -293,7 +293,7 @@ def test_no_legend_covers_data(name):
 
 
 def test_the_animation_reads_on_a_phone_and_its_pendulums_fill_their_panel():
-    from elliptic_pendulum.animation import animate
+    from elliptic_pendulum.plotting.animation import animate
 
     anim = animate([ep.solve(0.0), ep.solve(2.0), ep.solve(0.0, 2.0), ep.solve(0.0, 2.6)],
                    frames=2)

@@ -139,7 +139,7 @@ def identity(ident: _Identity, *, show: bool = True) -> Verdict:
 
     Examples
     --------
-    >>> from elliptic_pendulum.symbolic import identity as named
+    >>> from elliptic_pendulum.checks.identities import identity as named
     >>> print(identity(named("eq13")))
     ✔ (13) holds identically: sympy reduces the difference of its two sides to 0.
     >>> print(identity(named("eq13_root")))
