@@ -33,6 +33,8 @@ extensions = [
     "sphinx_book_theme",
     "classroom",
     "kernels",
+    # book/_ext/checks_scan.py: the checks of all pages, for the registry page.
+    "checks_scan",
     "offline",
     # book/_ext/a11y.py: WCAG 2.1 AA where docutils and myst-nb write otherwise (citations,
     # the code cells' toggles); after myst_nb, whose toggle it rewrites.

@@ -9,9 +9,10 @@ from elliptic_pendulum.checks import registry
 from elliptic_pendulum.checks.identities import identities
 from elliptic_pendulum.checks.registry import _RANGE
 from tests.conftest import ROOT
+from tools.checks.scan import scan, write
 
 BOOK = ROOT / "book"
-CHECKS = registry.scan(BOOK)
+CHECKS = scan(BOOK)
 
 
 def test_the_scanner_finds_the_books_checks():
@@ -85,7 +86,7 @@ def test_the_scanner_reads_loops_assignments_and_inline_identities(tmp_path):
         ```
         ''')
     (tmp_path / "page.md").write_text(page)
-    found = registry.scan(tmp_path)
+    found = scan(tmp_path)
     got = [(c.claim, c.kind.split()[0], bool(c.mutant), c.anchor) for c in found]
     assert got == [
         ("(13)", "sympy", True, "first-section"),
@@ -102,7 +103,7 @@ def test_the_scanner_reads_loops_assignments_and_inline_identities(tmp_path):
 def test_an_unknown_identity_name_is_an_error(tmp_path):
     (tmp_path / "p.md").write_text('```{code-cell} ipython3\nverify.identity(ids["nope"])\n```\n')
     with pytest.raises(KeyError):
-        registry.scan(tmp_path)
+        scan(tmp_path)
 
 
 def test_the_table_has_one_row_per_claim():
@@ -137,3 +138,9 @@ def test_every_check_of_no_numbered_claim_has_a_row_of_its_own():
     assert others and len(rows) == len(others)
     for page in {"period_in_depth", "rod_or_string", "resonance", "in_motion"}:
         assert f"{{doc}}`{page}`" in table
+
+
+def test_the_package_reads_back_what_the_build_wrote(tmp_path):
+    # The book's build writes the scan as JSON (book/_ext/checks_scan.py); the registry page
+    # reads it with registry.load: the same checks, field for field, in the same order.
+    assert registry.load(write(CHECKS, tmp_path / "checks.json")) == CHECKS
