@@ -21,7 +21,8 @@ from .markdown import DIRECTIVE_OPEN, HEADING, OPTION, TARGET, Target
 
 # Pages of the book that are not lessons and cannot run away from it: the registry of checks
 # reads the checks the build found in the pages (tools/checks) and displays MyST tables.
-# They keep their place in the book's numbering, but get no notebook; a link to them becomes plain text.
+# They keep their place in the book's numbering, but get no notebook; a link to them
+# becomes plain text.
 BOOK_ONLY_PAGES = {"checks"}
 TAG = re.compile(r"\\tag\*?\{(?P<tag>[^}]*)\}")
 TOCTREE = re.compile(r"^(`{3,}|:{3,})\{toctree\}[^\n]*\n(?P<body>.*?)^\1\s*$", re.S | re.M)
