@@ -26,7 +26,7 @@
   (tests/book/test_site.py searches them all). The pages for the teacher alone
   (``INSTRUCTOR_ONLY``: the teacher's guide) are left out of the student site, with their
   toctree entries.
-- ``source-read``, both sites: under each exercise, a folded hint (tools/classroom/selfcheck:
+- ``source-read``, both sites: under each exercise, a folded hint (elliptic_pendulum.selfcheck:
   the hint for the parts to prove, and the results the chapter's notebook checks).
 """
 
@@ -44,7 +44,8 @@ from sphinx.errors import ConfigError
 from sphinx.util import logging
 from sphinx_exercise.nodes import solution_node
 
-from tools.classroom import bundle, selfcheck
+from elliptic_pendulum import selfcheck
+from tools.classroom import bundle
 from tools.classroom import export as export_notebooks
 from tools.classroom.labels import scan
 from tools.classroom.markdown import strip_solutions

@@ -138,7 +138,8 @@ def test_the_release_holds_no_solution_hidden_test_or_model_answer(graded: dict)
         stubs = [c.source for c in release.cells
                  if c.metadata.get("nbgrader", {}).get("solution")]
         assert stubs and all("YOUR CODE HERE" in s or "YOUR ANSWER HERE" in s for s in stubs)
-        assert (folder / "release" / name / "selfcheck" / "_core.py").is_file()
+        # The self-checks come with the installed package: nothing is copied beside it.
+        assert sorted(p.name for p in (folder / "release" / name).iterdir()) == [f"{name}.ipynb"]
 
 
 def test_autograde_gives_the_solutions_full_marks_and_the_blank_release_none(

@@ -26,8 +26,9 @@ import jupytext
 import nbformat
 import pytest
 
+from elliptic_pendulum import selfcheck
 from tests.conftest import BOOK, ROOT, SUMMARY, Build
-from tools.classroom import bundle, selfcheck
+from tools.classroom import bundle
 from tools.classroom import export as ex
 from tools.classroom.labels import scan
 
@@ -254,7 +255,7 @@ def test_each_zip_holds_the_notebooks_the_wheel_and_how_to_install(
     for edition, folder in bundles.items():
         names = sorted(p.name for p in folder.iterdir())
         expected = [*BOOK_INDEX.files.values(), bundle.README, bundle.REQUIREMENTS,
-                    bundle.wheel_name(), bundle.SELFCHECK]
+                    bundle.wheel_name()]
         assert names == sorted(expected), edition
         readme = (folder / bundle.README).read_text(encoding="utf-8")
         # The JupyterHub's commands are the laptop's, with --user, and as a %pip cell.
@@ -570,7 +571,7 @@ def test_glue_is_formatted_as_the_book_formats_it() -> None:
 # The Japanese bundles: the same code as the English ones (tests/i18n/test_classroom_ja.py
 # compares them cell by cell, and every English notebook ran above), so two chapters of
 # each run here, for what differs: the Japanese README's install command, and the
-# self-checks answering in Japanese from the zip's own selfcheck/LANGUAGE.
+# self-checks answering in Japanese, as their cells ask (language='ja').
 JA_PAGES = ("energy", "libration")
 
 
@@ -595,7 +596,7 @@ def ja_bundles(book_ja_build: Build, student_ja_build: Build,
 def test_the_japanese_bundle_installs_and_answers_in_japanese(
     edition: str, ja_bundles: dict[str, Path], bundles: dict[str, Path], bundle_venv: Path
 ) -> None:
-    from tools.classroom.selfcheck import _ja
+    from elliptic_pendulum.selfcheck import _ja
 
     folder = ja_bundles[edition]
     argv = readme_install(folder)

@@ -228,7 +228,7 @@ def test_solutions_open_for_instructors_absent_for_students(pdfs: dict) -> None:
 def test_every_exercise_prints_its_hint_open(pdfs: dict) -> None:
     # One hint per exercise (book/_ext/classroom.py), opened by the printer in both editions;
     # the text of the first written hint of the registry is on paper.
-    from tools.classroom import selfcheck
+    from elliptic_pendulum import selfcheck
 
     exercises = len(scan(BOOK).exercise_numbers)
     # The longest stretch of a hint without math or roles: plain text on paper too.

@@ -39,26 +39,6 @@ ZIP_NAME = "elliptic-pendulum-notebooks"
 README = "README.md"
 REQUIREMENTS = "requirements.txt"
 BUNDLE_FILES = (README, REQUIREMENTS)
-# The exercises' self-checks (tools/classroom/selfcheck), a package beside the notebooks:
-# a notebook's kernel runs in the notebook's folder and imports it from there.
-SELFCHECK = "selfcheck"
-SELFCHECK_SOURCE = Path(__file__).resolve().parent / SELFCHECK
-
-
-def copy_selfcheck(folder: Path, language: str = "en") -> Path:
-    """folder/selfcheck: the self-check package, without caches, answering in ``language``
-    (for one other than "en", the copy's LANGUAGE file names it; selfcheck/_core.py reads
-    it, and selfcheck/_<language>.py has the messages)."""
-    if language != "en" and not (SELFCHECK_SOURCE / f"_{language}.py").is_file():
-        raise ValueError(f"the self-checks have no messages in the language {language!r}")
-    target = folder / SELFCHECK
-    shutil.rmtree(target, ignore_errors=True)
-    shutil.copytree(SELFCHECK_SOURCE, target, ignore=shutil.ignore_patterns("__pycache__"))
-    if language != "en":
-        (target / "LANGUAGE").write_text(f"{language}\n", encoding="utf-8")
-    return target
-
-
 def bundle_name(edition: str) -> str:
     return f"{ZIP_NAME}-{edition}"
 
@@ -117,9 +97,9 @@ def readme(edition: str, notebooks: list[str]) -> str:
 
 This folder holds the book *{TITLE}* as Jupyter notebooks, {content}; `{first}` lists
 the chapters. The notebooks use the Python package `elliptic_pendulum`, which is not on a
-package index: it is the file `{wheel}` in this folder; the folder `{SELFCHECK}` holds the
-exercises' self-checks, which the notebooks import from beside them (keep it next to the
-notebooks). `{REQUIREMENTS}` lists the other
+package index: it is the file `{wheel}` in this folder. The package also holds the
+exercises' self-checks (`elliptic_pendulum.selfcheck`), so a notebook checks its answers
+wherever the package is installed. `{REQUIREMENTS}` lists the other
 packages the notebooks import (NumPy, SciPy, SymPy, Matplotlib, mpmath, ipywidgets for the
 sliders) and JupyterLab to open them.
 
@@ -234,8 +214,8 @@ def _readme_ja(edition: str, notebooks: list[str]) -> str:
 このフォルダには、本書『{TITLE_JA}』を Jupyter ノートブックにしたもの、すなわち{content}が
 入っている。`{first}` が章の一覧である。ノートブックは Python パッケージ `elliptic_pendulum`
 を使う。このパッケージはパッケージインデックスにはなく、このフォルダのファイル `{wheel}` が
-それである。フォルダ `{SELFCHECK}` には演習の自己チェックが入っており、ノートブックはこれを
-同じ場所から読み込む（ノートブックと同じフォルダに置いたままにすること）。`{REQUIREMENTS}` には、
+それである。演習の自己チェック（`elliptic_pendulum.selfcheck`）もこのパッケージに含まれているので、
+パッケージを入れた環境ならどこでも、ノートブックは答えを確かめられる。`{REQUIREMENTS}` には、
 ノートブックが使うそのほかのパッケージ（NumPy、SciPy、SymPy、Matplotlib、mpmath、スライダー用の
 ipywidgets）と、ノートブックを開くための JupyterLab が並んでいる。
 
@@ -357,8 +337,7 @@ def write(folder: Path, edition: str, wheel: Path, language: str = "en") -> list
     (folder / REQUIREMENTS).write_text(requirements(), encoding="utf-8")
     text = readme_ja(edition, notebooks) if language == "ja" else readme(edition, notebooks)
     (folder / README).write_text(text, encoding="utf-8")
-    checks = copy_selfcheck(folder, language)
-    return [folder / wheel.name, folder / REQUIREMENTS, folder / README, checks]
+    return [folder / wheel.name, folder / REQUIREMENTS, folder / README]
 
 
 def zip_edition(folder: Path, edition: str, zip_dir: Path) -> Path:
@@ -371,10 +350,6 @@ def zip_edition(folder: Path, edition: str, zip_dir: Path) -> Path:
         files.append(folder / wheel_name())
         for path in files:
             z.write(path, f"{name}/{path.name}")
-        # The package's modules and its LANGUAGE file (a translated bundle's).
-        for path in sorted((folder / SELFCHECK).rglob("*")):
-            if path.is_file() and (path.suffix == ".py" or path.name == "LANGUAGE"):
-                z.write(path, f"{name}/{path.relative_to(folder).as_posix()}")
     return archive
 
 

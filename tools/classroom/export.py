@@ -38,7 +38,9 @@ from pathlib import Path
 import jupytext
 import nbformat
 
-from . import bundle, selfcheck, translation
+from elliptic_pendulum import selfcheck
+
+from . import bundle, translation
 from .bib import label as bib_label
 from .bib import load as load_bib
 from .bib import reference_line
@@ -152,7 +154,7 @@ def _what(text: str, language: str) -> str:
     # A result's description, as the self-check names it in the notebook's language.
     if language == "en":
         return text
-    from .selfcheck import _ja
+    from elliptic_pendulum.selfcheck import _ja
 
     found = _ja.MESSAGES.get(text)
     if found is None:
@@ -163,9 +165,9 @@ def _what(text: str, language: str) -> str:
 def answer_cells(label: str, ctx: Context,
                  catalog: translation.Catalog | None = None) -> list[nbformat.NotebookNode]:
     """What a student gets under an exercise: for its results, a cell that names them and
-    the self-check that reads them (selfcheck/); for what it asks to prove or explain, a
-    Markdown cell to write in and a folded hint. An exercise without a self-check gets one
-    empty code cell."""
+    the self-check that reads them (elliptic_pendulum.selfcheck); for what it asks to prove
+    or explain, a Markdown cell to write in and a folded hint. An exercise without a
+    self-check gets one empty code cell."""
     exercise = selfcheck.EXERCISES.get(label)
     if exercise is None:
         return [nbformat.v4.new_code_cell("")]
@@ -178,7 +180,7 @@ def answer_cells(label: str, ctx: Context,
         cells.append(nbformat.v4.new_markdown_cell(w.results.format(names=names)))
         cells.append(nbformat.v4.new_code_cell(
             "\n".join(w.placeholder.format(name=v.name) for v in exercise.values)))
-        cells.extend(self_check_cells(label, "student"))
+        cells.extend(self_check_cells(label, "student", w.language))
     if exercise.written is not None:
         # The site shows the same hint under the exercise (book/_ext/classroom.py), so the
         # page's catalog translates it.
@@ -195,7 +197,8 @@ def answer_cells(label: str, ctx: Context,
     return cells
 
 
-def self_check_cells(label: str, edition: str) -> list[nbformat.NotebookNode]:
+def self_check_cells(label: str, edition: str,
+                     language: str = "en") -> list[nbformat.NotebookNode]:
     """The cell that runs the self-check of exercise ``label`` on the names of its results:
     under the student's answer cell, and under the instructor's solution (which it checks
     against the self-check's independent reference every time the notebook runs)."""
@@ -203,8 +206,12 @@ def self_check_cells(label: str, edition: str) -> list[nbformat.NotebookNode]:
     if not exercise.values:
         return []
     args = ", ".join(f"{v.name}={v.name}" for v in exercise.values)
+    # A translated edition's notebooks ask for their language: the check answers in it
+    # whatever the student's environment says (English ones follow the environment).
+    if language != "en":
+        args = f"language={language!r}, {args}"
     cell = nbformat.v4.new_code_cell(
-        f"from selfcheck import check\n\ncheck({label!r}, {args})")
+        f"from elliptic_pendulum.selfcheck import check\n\ncheck({label!r}, {args})")
     cell.metadata["classroom"] = {"self_check": label}
     return [cell]
 
@@ -314,7 +321,7 @@ def export_page(
             elif marker == "SOLUTION-END":
                 in_solution = False
                 if edition == "instructor" and current in selfcheck.EXERCISES:
-                    cells.extend(self_check_cells(current, edition))
+                    cells.extend(self_check_cells(current, edition, ctx.words.language))
             elif piece.strip() and (not in_solution or edition == "instructor"):
                 missing = re.search(f"{SENTINEL}MISSING (.*?){SENTINEL}", piece)
                 if missing:

@@ -36,7 +36,7 @@ from pathlib import Path
 
 import nbformat
 
-from . import bundle, selfcheck
+from elliptic_pendulum import selfcheck
 
 COURSE_ID = "elliptic-pendulum"
 CONFIG = '''\
@@ -105,7 +105,7 @@ def _exercise_cells(label: str, solution: list[nbformat.NotebookNode]) -> tuple[
         args = ", ".join(f"{v.name}={v.name}" for v in exercise.values)
         auto = len(exercise.values)
         cells.append(_nbgrader(nbformat.v4.new_code_cell(
-            f"from selfcheck import check\n\nassert check({label!r}, {args}), "
+            f"from elliptic_pendulum.selfcheck import check\n\nassert check({label!r}, {args}), "
             "\"the self-check's message says what is not right yet\"\n"
             "### BEGIN HIDDEN TESTS\n" + hidden_tests(label) + "\n### END HIDDEN TESTS"),
             f"{label}-tests", solution=False, grade=True, locked=True, points=auto))
@@ -228,7 +228,6 @@ def write_course(instructor_dir: Path, out: Path) -> dict[str, tuple[int, int]]:
         folder = out / "source" / name
         folder.mkdir(parents=True)
         nbformat.write(nb, folder / f"{name}.ipynb")
-        bundle.copy_selfcheck(folder)
         points[name] = (auto, manual)
     if not points:
         raise ValueError(f"no instructor notebook with solutions in {instructor_dir}")

@@ -1,5 +1,7 @@
-"""Japanese for the self-checks (_core.py): what judge and check say, and each exercise's
-texts, for the notebooks of the Japanese edition.
+"""Japanese for the self-checks (_core.py).
+
+What judge and check say, and each exercise's texts, for the notebooks of the Japanese
+edition.
 
 MESSAGES maps every ``Value.what`` and ``Hint.message`` of the chapter modules, exactly as
 written there, to its Japanese; the terms are the book's (book/glossary.md and the chapters'

@@ -42,7 +42,7 @@ def mean() -> dict[str, float]:
     def turned(t, y):
         return y[0] - 0.4 - 2 * math.pi
 
-    turned.terminal = True
+    turned.terminal = True  # type: ignore[attr-defined]  # scipy reads it
     run = solve_ivp(lambda t, y: (y[1], -w**2 * math.sin(y[0])), (0.0, 10.0),
                     (0.4, 2.6 * w), method="DOP853", rtol=1e-13, atol=1e-13, events=turned)
     T = float(run.t_events[0][0])

@@ -8,23 +8,26 @@ closed form, a series where it asks for the library, ...). :func:`check` compare
 for each value, either that it is right or what is wrong with it, with the hint of the first
 expected mistake it matches: the hint names the mistake, never the value.
 
-It says so in the package's language, named by the file LANGUAGE beside this module (English
-without it): English is written here, another language in its own module, ``_ja.py`` for
+It says so in the language it is asked for (``language="ja"``), else in the one the
+environment names as gettext reads it (the first of LANGUAGE, LC_ALL, LC_MESSAGES and LANG
+that is set; ``ja_JP.UTF-8`` names Japanese), else in English. Nothing global is set: each
+call chooses. English is written here, another language in its own module, ``_ja.py`` for
 Japanese, which translates the exercises' texts and this module's sentences.
 
-A ``reference`` imports what it needs inside its own body: nbgrader's hidden tests
-(tools/classroom/nbgrader.py) paste its source into the test cell, where nothing else of this
-package exists.
+A ``reference`` imports what it needs inside its own body: nbgrader's hidden tests (the
+repository's tools/classroom/nbgrader.py) paste its source into the test cell, where nothing
+else of this package exists.
 """
 
 from __future__ import annotations
 
 import importlib
+import importlib.util
 import math
-from collections.abc import Callable
+import os
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from functools import cache
-from pathlib import Path
 from typing import Any
 
 # Exercise label -> Exercise, filled by the chapter modules.
@@ -35,8 +38,11 @@ WRONG = "\u2718"  # heavy ballot x
 
 @dataclass(frozen=True)
 class Hint:
-    """An expected mistake: ``when(answer, expected)`` is true for it, ``message`` says what
-    to look at; ``example(expected)`` is an answer that makes it (the tests feed it)."""
+    """An expected mistake, what to look at, and an answer that makes it.
+
+    ``when(answer, expected)`` is true for it, ``message`` says what to look at;
+    ``example(expected)`` is an answer that makes it (the tests feed it).
+    """
 
     when: Callable[[Any, Any], bool]
     message: str
@@ -90,7 +96,7 @@ def register(*exercises: Exercise) -> None:
 
 @cache
 def expected(label: str) -> dict[str, Any]:
-    """The reference values of an exercise (computed once per session)."""
+    """Return the reference values of an exercise (computed once per session)."""
     exercise = EXERCISES[label]
     assert exercise.reference is not None
     return exercise.reference()
@@ -117,9 +123,11 @@ def _as_kind(value: Value, answer: Any) -> Any:
 
 def judge(value: Value, answer: Any, want: Any, *,
           language: str | None = None) -> tuple[bool, str]:
-    """(right, message) for one answer, in ``language`` (default: the package's, see
-    :func:`package_language`)."""
-    texts = _texts(language or package_language())
+    """Return (right, message) for one answer.
+
+    In ``language``; by default the environment's (see :func:`environment_language`).
+    """
+    texts = _texts(language or environment_language())
     say = texts.templates
     what = texts.translate(value.what)
     name = f"`{value.name}`"
@@ -155,24 +163,28 @@ def judge(value: Value, answer: Any, want: Any, *,
     return False, say["look_again"].format(name=name, what=what)
 
 
-def check(label: str, /, **answers: Any) -> bool:
-    """Print, for each answer of exercise ``label``, whether it is right (and a hint if not);
-    return True when all are. ``check("ex-energy-threshold", v_star=v_star)``."""
-    ok, text = report(label, answers)
+def check(label: str, /, *, language: str | None = None, **answers: Any) -> bool:
+    """Print whether each answer of exercise ``label`` is right; return True when all are.
+
+    A wrong answer gets a hint that names the likely mistake, never the value:
+    ``check("ex-energy-threshold", v_star=v_star)``; in Japanese,
+    ``check("ex-energy-threshold", language="ja", v_star=v_star)``.
+    """
+    ok, text = report(label, answers, language=language)
     _show(text)
     return ok
 
 
 def report(label: str, answers: dict[str, Any], *,
            language: str | None = None) -> tuple[bool, str]:
-    """What :func:`check` prints (Markdown), and whether all answers are right."""
+    """Return whether all answers are right, and what :func:`check` prints (Markdown)."""
     if label not in EXERCISES:
         raise ValueError(f"label must be one of the exercises with a self-check, not {label!r}")
     exercise = EXERCISES[label]
     unknown = set(answers) - {v.name for v in exercise.values}
     if unknown:
         raise TypeError(f"{label} has no answer named {', '.join(sorted(unknown))}")
-    texts = _texts(language or package_language())
+    texts = _texts(language or environment_language())
     want = expected(label)
     lines, ok = [], True
     for value in exercise.values:
@@ -207,19 +219,37 @@ ENGLISH = {
 ENGLISH_KINDS = {float: "a number", int: "a whole number", bool: "True or False",
                  str: "a string"}
 ENGLISH_OTHER_KIND = "a {kind}"
-# The one-line file that names the package's language; the classroom bundle writes it into
-# the copy of a non-English edition (bundle.copy_selfcheck).
-LANGUAGE_FILE = Path(__file__).with_name("LANGUAGE")
+# Where gettext looks for the language of messages, in its order.
+LANGUAGE_VARIABLES = ("LANGUAGE", "LC_ALL", "LC_MESSAGES", "LANG")
 
 
-@cache
-def package_language() -> str:
-    """The language of the messages: the first line of LANGUAGE_FILE, "en" without it."""
-    try:
-        text = LANGUAGE_FILE.read_text(encoding="utf-8").strip()
-    except FileNotFoundError:
+def environment_language(environ: dict[str, str] | None = None) -> str:
+    """Return the language of the messages as gettext would choose it from the environment.
+
+    The first of LANGUAGE (a colon-separated list), LC_ALL, LC_MESSAGES and LANG that is set
+    decides: its first entry with messages here wins ("ja_JP.UTF-8" is "ja"); "C", "POSIX"
+    or an entry with none gives English.
+
+    >>> environment_language({"LANG": "ja_JP.UTF-8"}), environment_language({})
+    ('ja', 'en')
+    >>> environment_language({"LANGUAGE": "fr:ja", "LANG": "en_US.UTF-8"})
+    'ja'
+    """
+    env: Mapping[str, str] = os.environ if environ is None else environ
+    for variable in LANGUAGE_VARIABLES:
+        value = env.get(variable, "")
+        if not value:
+            continue
+        for entry in value.split(":"):
+            code = entry.split(".")[0].split("@")[0].split("_")[0]
+            if code == "en" or (code.isidentifier() and _has_messages(code)):
+                return code
         return "en"
-    return text.splitlines()[0].strip() if text else "en"
+    return "en"
+
+
+def _has_messages(language: str) -> bool:
+    return importlib.util.find_spec(f"._{language}", __package__) is not None
 
 
 @dataclass(frozen=True)
@@ -258,7 +288,7 @@ def _show(text: str) -> None:
         from IPython import get_ipython
         from IPython.display import Markdown, display
     except ImportError:
-        get_ipython = None  # type: ignore[assignment]
+        get_ipython = None
     if get_ipython is not None and get_ipython() is not None:
         display(Markdown(text))
     else:

@@ -1,14 +1,16 @@
-"""The self-checks in Japanese (tools/classroom/selfcheck/_ja.py), and English unchanged.
+"""The self-checks in Japanese (elliptic_pendulum/selfcheck/_ja.py), and English unchanged.
 
-The Japanese notebooks ship the package with a LANGUAGE file (bundle.copy_selfcheck), and
-then judge and check must say everything in Japanese: the exercises' texts through MESSAGES,
-the core's sentences through TEMPLATES. Without the file they must say exactly what they
-said before the package had languages, and not even import _ja.py.
+Asked for Japanese (``language="ja"``, as the Japanese notebooks ask, or an environment whose
+LANGUAGE, LC_ALL, LC_MESSAGES or LANG names it), judge and check must say everything in
+Japanese: the exercises' texts through MESSAGES, the core's sentences through TEMPLATES.
+Otherwise they must say exactly what they said before the package had languages, and not
+even import _ja.py.
 """
 
 from __future__ import annotations
 
 import math
+import os
 import re
 import string
 import subprocess
@@ -19,8 +21,8 @@ from typing import Any
 
 import pytest
 
-from tools.classroom import bundle, selfcheck
-from tools.classroom.selfcheck import _core, _ja
+from elliptic_pendulum import selfcheck
+from elliptic_pendulum.selfcheck import _core, _ja
 
 VALUES = [(label, value) for label, ex in sorted(selfcheck.EXERCISES.items())
           for value in ex.values]
@@ -134,9 +136,12 @@ def test_english_judge_says_what_it_said_before(label, value) -> None:
         assert _core.judge(value, answer, want, language="en") == before, answer
 
 
-def test_english_check_says_what_it_said_before(capsys) -> None:
-    # The same reference for whole reports: all right, one wrong, one missing.
-    assert _core.package_language() == "en", "the package folder holds a LANGUAGE file"
+def test_english_check_says_what_it_said_before(capsys, monkeypatch) -> None:
+    # The same reference for whole reports: all right, one wrong, one missing; in an
+    # environment that names English (whatever the machine running the tests says).
+    for variable in _core.LANGUAGE_VARIABLES:
+        monkeypatch.delenv(variable, raising=False)
+    monkeypatch.setenv("LANG", "en_US.UTF-8")
     for label, exercise in sorted(selfcheck.EXERCISES.items()):
         if not exercise.values:
             continue
@@ -255,48 +260,56 @@ def test_an_unknown_language_is_a_clear_error() -> None:
         _core.judge(value, 1.0, 1.0, language="xx")
     with pytest.raises(ValueError, match="no self-check messages"):
         _core.judge(value, 1.0, 1.0, language="../en")
-    with pytest.raises(ValueError, match="no messages"):
-        bundle.copy_selfcheck(Path("/nonexistent"), "xx")
 
 
-def test_the_language_file_is_read(tmp_path, monkeypatch, capsys) -> None:
-    # The file's first line names the language (_core.package_language); an absent file
-    # means English. The file is put in tmp_path, not into the package folder.
-    monkeypatch.setattr(_core, "LANGUAGE_FILE", tmp_path / "LANGUAGE")
-    _core.package_language.cache_clear()
-    try:
-        assert _core.package_language() == "en"
-        _core.package_language.cache_clear()
-        (tmp_path / "LANGUAGE").write_text("ja\n", encoding="utf-8")
-        assert _core.package_language() == "ja"
-        assert selfcheck.check("ex-energy-threshold", v_star=...) is False
-        assert "`v_star` はまだ `...` のままである。" in capsys.readouterr().out
-    finally:
-        _core.package_language.cache_clear()
+@pytest.mark.parametrize(("environ", "language"), [
+    ({}, "en"),
+    ({"LANG": "ja_JP.UTF-8"}, "ja"),
+    ({"LANG": "C"}, "en"),
+    ({"LC_ALL": "ja_JP.eucJP", "LANG": "en_GB.UTF-8"}, "ja"),
+    ({"LC_MESSAGES": "en_US.UTF-8", "LANG": "ja_JP.UTF-8"}, "en"),
+    ({"LANGUAGE": "de:ja", "LANG": "en_US.UTF-8"}, "ja"),
+    ({"LANGUAGE": "de:fr", "LANG": "ja_JP.UTF-8"}, "en"),
+    ({"LANGUAGE": "", "LANG": "ja_JP"}, "ja"),
+])
+def test_the_environment_names_the_language_as_for_gettext(environ, language) -> None:
+    # gettext.find's order (LANGUAGE, LC_ALL, LC_MESSAGES, LANG; the first that is set
+    # decides, an empty one is skipped), with the languages that have messages here.
+    assert _core.environment_language(environ) == language
 
 
-# --- The bundle's copy -------------------------------------------------------------------
+def test_an_explicit_language_beats_the_environment(monkeypatch, capsys) -> None:
+    monkeypatch.setenv("LANGUAGE", "ja")
+    assert selfcheck.check("ex-energy-threshold", v_star=...) is False
+    assert "`v_star` はまだ `...` のままである。" in capsys.readouterr().out
+    assert selfcheck.check("ex-energy-threshold", language="en", v_star=...) is False
+    assert "`v_star` is still `...`" in capsys.readouterr().out
 
-def _run_check(folder: Path, code: str) -> subprocess.CompletedProcess[str]:
-    # As a notebook's kernel imports it: from the folder the notebooks are in.
+
+# --- As a notebook's kernel runs it: the installed package, anywhere ----------------------
+
+def _run_check(folder: Path, code: str, **env: str) -> subprocess.CompletedProcess[str]:
+    # From an empty folder: the check comes with the installed package, nothing beside it.
+    environ = {k: v for k, v in os.environ.items()
+               if k not in _core.LANGUAGE_VARIABLES}
     return subprocess.run([sys.executable, "-c", code], cwd=folder, capture_output=True,
-                          text=True, timeout=300, encoding="utf-8")
+                          text=True, timeout=300, encoding="utf-8", env={**environ, **env})
 
 
 CHECK = ("import sys\n"
-         "from selfcheck import check\n"
-         "check('ex-energy-threshold', v_star={v_star!r})\n"
-         "check('ex-energy-threshold', v_star=...)\n"
-         "print('imported _ja:', 'selfcheck._ja' in sys.modules)\n")
+         "from elliptic_pendulum.selfcheck import check\n"
+         "check('ex-energy-threshold', {language}v_star={v_star!r})\n"
+         "check('ex-energy-threshold', {language}v_star=...)\n"
+         "print('imported _ja:', 'elliptic_pendulum.selfcheck._ja' in sys.modules)\n")
 
 
-def test_the_japanese_bundle_prints_japanese(tmp_path) -> None:
-    # The expected text is the in-process report in "ja" (tested above); the copy must
-    # choose it by its LANGUAGE file alone.
-    target = bundle.copy_selfcheck(tmp_path, "ja")
-    assert (target / "LANGUAGE").read_text(encoding="utf-8") == "ja\n"
+@pytest.mark.parametrize(("how", "env"), [("language='ja', ", {}),
+                                          ("", {"LANG": "ja_JP.UTF-8"})])
+def test_asked_for_japanese_it_prints_japanese(tmp_path, how, env) -> None:
+    # The expected text is the in-process report in "ja" (tested above); the installed
+    # package must choose it by the argument or the environment alone.
     v_star = selfcheck.expected("ex-energy-threshold")["v_star"]
-    run = _run_check(tmp_path, CHECK.format(v_star=v_star))
+    run = _run_check(tmp_path, CHECK.format(v_star=v_star, language=how), **env)
     assert run.returncode == 0, run.stderr
     right = _core.report("ex-energy-threshold", {"v_star": v_star}, language="ja")[1]
     untouched = _core.report("ex-energy-threshold", {"v_star": ...}, language="ja")[1]
@@ -304,15 +317,10 @@ def test_the_japanese_bundle_prints_japanese(tmp_path) -> None:
     assert "すべて正しい。" in run.stdout
 
 
-def test_the_english_bundle_prints_english_without_the_japanese_module(tmp_path) -> None:
-    # English as before (the reference of _report_before), with _ja.py neither imported nor
-    # needed: the copy works with it deleted.
-    target = bundle.copy_selfcheck(tmp_path, "ja")
-    target = bundle.copy_selfcheck(tmp_path)  # a copy over a Japanese one leaves no LANGUAGE
-    assert not (target / "LANGUAGE").exists()
-    (target / "_ja.py").unlink()
+def test_otherwise_it_prints_english_without_the_japanese_module(tmp_path) -> None:
+    # English as before (the reference of _report_before), with _ja.py not imported.
     v_star = selfcheck.expected("ex-energy-threshold")["v_star"]
-    run = _run_check(tmp_path, CHECK.format(v_star=v_star))
+    run = _run_check(tmp_path, CHECK.format(v_star=v_star, language=""), LANG="en_US.UTF-8")
     assert run.returncode == 0, run.stderr
     right = _report_before("ex-energy-threshold", {"v_star": v_star})[1]
     untouched = _report_before("ex-energy-threshold", {"v_star": ...})[1]

@@ -38,8 +38,8 @@ def series() -> dict[str, float]:
 
 
 def _sum_hints(terms: int) -> tuple[Hint, ...]:
-    hints = [Hint(lambda a, e, x=x: _near(a, _partial(x, terms), 1e-8), message,
-                  lambda e, x=x: _partial(x, terms)) for x, message in _WRONG_ALPHA2]
+    hints = [Hint(lambda a, e, x=x: _near(a, _partial(x, terms), 1e-8), message,  # type: ignore[misc]
+                  lambda e, x=x: _partial(x, terms)) for x, message in _WRONG_ALPHA2]  # type: ignore[misc]
     hints.append(Hint(lambda a, e: _near(a, math.pi / 2 * e, 1e-8),
                       "That estimates $K_1$; the period ratio is $R = (2/\\pi)K_1$.",
                       lambda e: math.pi / 2 * e))

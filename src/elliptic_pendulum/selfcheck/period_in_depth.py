@@ -46,6 +46,7 @@ def terms() -> dict[str, float | int]:
             if abs(1 / a / R - 1) < mpmath.mpf("1e-6"):
                 n_steps = n
                 break
+        assert n_terms is not None and n_steps is not None and r1 is not None
         return {"n_terms": int(n_terms), "n_steps": int(n_steps), "r1": float(r1)}
 
 

@@ -22,7 +22,7 @@ def loop() -> dict[str, float]:
     def rhs(t, y):
         return [y[1], -math.sin(y[0])]
 
-    top.terminal = True
+    top.terminal = True  # type: ignore[attr-defined]  # scipy reads it
     v = math.sqrt(5)
     sol = solve_ivp(rhs, [0.0, 30.0], [0.0, v], method="DOP853", rtol=3e-13, atol=3e-13,
                     events=top)
@@ -46,7 +46,7 @@ def six() -> dict[str, float]:
     def rhs(t, y):
         return [y[1], -w2 * math.sin(y[0])]
 
-    top.terminal = True
+    top.terminal = True  # type: ignore[attr-defined]  # scipy reads it
     gaps = []
     kicks = [2.3, 3.0, 5.0]
     for kick in kicks:

@@ -53,7 +53,7 @@ def string() -> dict[str, float]:
     def slack(t, y):
         return y[1] ** 2 / w**2 + math.cos(y[0])  # T / (m g)
 
-    slack.terminal = True
+    slack.terminal = True  # type: ignore[attr-defined]  # scipy reads it
     run = solve_ivp(lambda t, y: (y[1], -w**2 * math.sin(y[0])), (0.0, 10 / w),
                     (0.0, 2 * w), method="DOP853", rtol=1e-13, atol=1e-14, events=slack)
     return {"theta_slack": float(run.y_events[0][0][0])}

@@ -1,5 +1,4 @@
-"""Self-checks of the exercises of the chapter on the solution of libration
-(book/libration_solution.md)."""
+"""Self-checks of the exercises of the chapter on the solution of libration."""
 
 from __future__ import annotations
 

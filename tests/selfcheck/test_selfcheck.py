@@ -1,4 +1,4 @@
-"""The exercises' self-checks (tools/classroom/selfcheck) on wrong answers, and their registry
+"""The exercises' self-checks (elliptic_pendulum.selfcheck) on wrong answers, and their registry
 against the book.
 
 Right answers are the instructor's: tests/book/test_notebooks.py runs every instructor
@@ -15,8 +15,8 @@ import re
 
 import pytest
 
+from elliptic_pendulum import selfcheck
 from tests.conftest import BOOK
-from tools.classroom import selfcheck
 from tools.classroom.labels import scan
 
 VALUES = [(label, value) for label, ex in sorted(selfcheck.EXERCISES.items())
@@ -103,10 +103,9 @@ def test_the_package_shares_no_line_with_a_worked_solution() -> None:
     from pathlib import Path
 
     from tests.book.test_site import _squash, solution_snippets
-    from tools.classroom import bundle
 
     text = _squash("\n".join(p.read_text(encoding="utf-8")
-                             for p in sorted(Path(bundle.SELFCHECK_SOURCE).rglob("*.py"))))
+                             for p in sorted(Path(selfcheck.__file__).parent.rglob("*.py"))))
     text += _squash("\n".join(e.written or "" for e in selfcheck.EXERCISES.values()))
     leaks = {s: sorted(p for p in pieces if p in text)
              for s, pieces in solution_snippets().items()}
