@@ -1,13 +1,12 @@
 """Sphinx extension: the classroom editions inside the book build, and the student book.
 
-- ``build-finished`` (html builder): tools/classroom (the exporter) writes the notebooks into
-  ``<outdir>/classroom/<edition>/NN-page.ipynb`` with the values this very build glued
-  (myst-nb's ``jupyter_execute/<page>.glue.json``, so the notebook's text quotes exactly what
-  the HTML page shows), adds what a student needs to run them (tools/classroom/bundle.py:
-  the package's wheel, built from this repository, ``requirements.txt`` and a README on
-  installing them) and zips each edition as ``classroom/<name>-<edition>.zip``. A translated
-  edition (``-D language=ja``) exports its notebooks in its language, through the catalogs
-  it is built with.
+- ``build-finished`` (html builder): tools/classroom/export.py writes the notebooks into
+  ``<outdir>/classroom/<edition>/NN-page.ipynb`` from the doctrees this build resolved for
+  the pages (tools/classroom/doctree.py), so a notebook's text is the page's, with its
+  numbers, links and glued values, in the build's language; then it adds what a student
+  needs to run them (tools/classroom/bundle.py: the package's wheel, built from this
+  repository, ``requirements.txt`` and a README on installing them) and zips each edition
+  as ``classroom/<name>-<edition>.zip``.
 - ``html-page-context``: each chapter page's download menu (sphinx-book-theme) offers the
   page's student notebook and the student zip, and in the instructor site (the default
   build) the instructor notebook and zip too, as relative links into the build: they work
@@ -20,10 +19,11 @@
   page is read and executed whole, exactly as in the instructor site, so both sites (and the
   PDFs) share one execution cache and each notebook runs once; the solutions are removed from
   the doctree at ``doctree-read`` (sphinx-exercise has merged each gated solution into one
-  node by then), before anything is indexed or written. The page sources that Sphinx copies
-  to ``_sources/`` (the download menu's ``.md``) are replaced by the stripped text, and only
-  the student edition is exported: no file of the student site holds a solution
-  (tests/book/test_site.py searches them all). The pages for the teacher alone
+  node by then), before anything is indexed or written; the instructor site's student
+  notebooks are written from trees the same function stripped. The student site copies no
+  page source (``html_copy_source``), and exports only the student edition: no file of the
+  student site holds a solution (tests/book/test_site.py searches them all). The pages for
+  the teacher alone
   (``INSTRUCTOR_ONLY``: the teacher's guide) are left out of the student site, with their
   toctree entries.
 - ``source-read``, both sites: under each exercise, a folded hint (elliptic_pendulum.selfcheck:
@@ -42,13 +42,10 @@ from sphinx.application import Sphinx
 from sphinx.config import Config
 from sphinx.errors import ConfigError
 from sphinx.util import logging
-from sphinx_exercise.nodes import solution_node
 
 from elliptic_pendulum import selfcheck
-from tools.classroom import bundle
+from tools.classroom import bundle, doctree
 from tools.classroom import export as export_notebooks
-from tools.classroom.labels import scan
-from tools.classroom.markdown import strip_solutions
 
 logger = logging.getLogger(__name__)
 # Pages for the teacher only: left out of the student site, their toctree entries with them.
@@ -74,18 +71,13 @@ def _take_over_hide_solutions(app: Sphinx, config: Config) -> None:
     if config.classroom_edition == "student":
         config.exclude_patterns = [*config.exclude_patterns,
                                    *(f"{page}.md" for page in INSTRUCTOR_ONLY)]
+        # The pages' sources hold the solutions: the student site copies none (its download
+        # menu offers the notebook, written from the page without them, and the PDF).
+        config.html_copy_source = False
     if config.classroom_edition not in ("instructor", "student"):
         raise ConfigError(
             f"classroom_edition must be 'instructor' or 'student', not {config.classroom_edition!r}"
         )
-
-
-def student_text(text: str) -> str:
-    """Return a page's source as the student site has it.
-
-    No solution, and no instructor-only page in its toctrees.
-    """
-    return _ENTRY.sub("", strip_solutions(text))
 
 
 def _drop_instructor_pages(app: Sphinx, docname: str, source: list[str]) -> None:
@@ -125,12 +117,12 @@ def _hints(app: Sphinx, docname: str, source: list[str]) -> None:
     source[0] = _EXERCISE.sub(lambda m: m[0] + hint_block(m["label"]), source[0])
 
 
-def _remove_solutions(app: Sphinx, doctree: nodes.document) -> None:
+def _remove_solutions(app: Sphinx, tree: nodes.document) -> None:
     # Before sphinx-exercise's own doctree-read (priority 500) registers the solutions'
-    # labels, so nothing in the student site can refer to one.
+    # labels, so nothing in the student site can refer to one. The student notebooks of the
+    # instructor site are written from trees that the same function stripped.
     if _student(app):
-        for node in list(doctree.findall(solution_node)):
-            node.parent.remove(node)
+        doctree.remove_solutions(tree)
 
 
 def _download_buttons(
@@ -138,7 +130,7 @@ def _download_buttons(
 ) -> None:
     if app.builder.name != "html":
         return
-    files = app.env.classroom_files  # type: ignore[attr-defined]
+    files = export_notebooks.notebook_files(app.env)
     if pagename not in files:
         return
     up = "../" * pagename.count("/")
@@ -185,42 +177,14 @@ def _edition(
     context["classroom_edition"] = app.config.classroom_edition
 
 
-def _stripped_sources(app: Sphinx) -> None:
-    # Sphinx copies each page's source file as it is to _sources/ (the download menu's .md):
-    # in the student site, that copy is the stripped text the page was built from.
-    sources = Path(app.outdir) / "_sources"
-    for docname in sorted(app.env.found_docs):
-        source = Path(app.env.doc2path(docname))
-        for copy in sources.glob(f"{docname}.*"):
-            if copy.name.startswith(source.name):
-                text = student_text(source.read_text(encoding="utf-8"))
-                copy.write_text(text, encoding="utf-8")
-
-
-def _scan(app: Sphinx, env: Any, docnames: list[str]) -> None:
-    # The notebook names in reading order, known before any page is written.
-    env.classroom_files = scan(Path(app.srcdir)).files
-
-
 def _export(app: Sphinx, exception: BaseException | None) -> None:
     if exception is not None or app.builder.name != "html":
         return
-    if _student(app):
-        _stripped_sources(app)
     out = Path(app.outdir) / FOLDER
     editions = _editions(app)
-    # The values myst-nb glued: a translated edition inside a site reads the English
-    # build's (the same cells, the same cache), whose folder holds every page; its own
-    # holds only the pages it read this time, and is removed after (book/_ext/i18n.py).
-    site = Path(app.outdir).parent
-    inside = _language(app) != "en" and (site / "index.html").exists()
-    glue = (site.parent if inside else site) / "jupyter_execute"
     try:
-        export_notebooks.export(
-            Path(app.srcdir), out, glue_from=glue, editions=editions,
-            language=_language(app),
-        )
-    except ValueError as err:  # a page the exporter cannot translate: say which, and why
+        export_notebooks.export(app.env, app.builder, out, editions, _language(app))
+    except ValueError as err:  # a page the notebooks cannot hold: say which, and why
         logger.warning(f"classroom notebooks not exported: {err}", type="classroom")
         return
     try:
@@ -232,8 +196,8 @@ def _export(app: Sphinx, exception: BaseException | None) -> None:
 
 
 def _language(app: Sphinx) -> str:
-    # The edition's notebooks in its own language: the exporter translates each page
-    # through the catalogs this build reads (book/locale), before it converts the MyST.
+    # The edition's notebooks in its own language: the doctrees of a translated build hold
+    # the translation already; the writer's own words (words.py) follow it.
     return str(app.config.language or "en")
 
 
@@ -265,7 +229,6 @@ def setup(app: Sphinx) -> dict[str, Any]:
     app.connect("source-read", _drop_instructor_pages)
     app.connect("source-read", _hints)
     app.connect("doctree-read", _remove_solutions, priority=400)
-    app.connect("env-before-read-docs", _scan)
     # After sphinx-book-theme builds its header buttons (priority 501).
     app.connect("html-page-context", _download_buttons, priority=510)
     app.connect("html-page-context", _edition)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import re
+from dataclasses import dataclass
 from html.parser import HTMLParser
 from pathlib import Path
 
@@ -88,3 +89,45 @@ def links_with_spaces(html_dir: Path) -> dict[str, list[str]]:
         if bad:
             result[page] = bad
     return result
+
+
+@dataclass(frozen=True)
+class BookIndex:
+    """The book as Sphinx resolved it in a build: reading order, titles, numbers.
+
+    Read from the build's environment (``<doctrees>/environment.pickle``), not from the
+    pages: the numbers are the ones the HTML shows. ``files`` is the notebook of each page
+    that has one (tools/classroom/export.py names them).
+    """
+
+    pages: list[str]  # the executed pages in reading order, the index first
+    exported: list[str]
+    files: dict[str, str]
+    titles: dict[str, str]
+    exercise_numbers: dict[str, str]  # label -> number, in reading order
+    exercise_pages: dict[str, str]  # label -> page
+    figure_numbers: dict[str, str]  # figure id -> number
+
+
+def book_index(doctrees: Path) -> BookIndex:
+    import pickle
+
+    from tools.classroom import export
+
+    with (doctrees / "environment.pickle").open("rb") as f:
+        env = pickle.load(f)
+    pages = export.reading_order(env)
+    files = export.notebook_files(env)
+
+    def numbered(kind: str) -> dict[str, tuple[str, str]]:
+        return {i: (".".join(map(str, n)), page) for page in pages
+                for i, n in env.toc_fignumbers.get(page, {}).get(kind, {}).items()}
+
+    exercises = numbered("exercise")
+    return BookIndex(
+        pages=pages, exported=list(files), files=files,
+        titles={page: env.titles[page].astext() for page in pages},
+        exercise_numbers={k: v[0] for k, v in exercises.items()},
+        exercise_pages={k: v[1] for k, v in exercises.items()},
+        figure_numbers={k: v[0] for k, v in numbered("figure").items()},
+    )

@@ -15,6 +15,7 @@ from typing import NoReturn
 
 import pytest
 
+from tests.book._buildcheck import BookIndex, book_index
 from tests.conftest import BOOK, Build
 
 _HERE = Path(__file__).resolve().parent
@@ -33,6 +34,37 @@ def unavailable(message: str, remedy: str) -> NoReturn:
     if os.environ.get("CI", "").lower() == "true":
         pytest.fail(f"{message}; {remedy}", pytrace=False)
     pytest.skip(message)
+
+
+@pytest.fixture(scope="session")
+def index(built_book: Path) -> BookIndex:
+    """The session's English book as Sphinx resolved it (order, titles, numbers)."""
+    return book_index(built_book.parent / "doctrees" / "book")
+
+
+@pytest.fixture(scope="session")
+def tiny_sites(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
+    """The small book of tests/book/test_notebooks.py (SYNTHETIC) built by Sphinx with the
+    book's extensions, as the instructor site ("full") and the student site."""
+    import subprocess
+    import sys
+
+    from tests.book.test_notebooks import SYNTHETIC
+
+    root = tmp_path_factory.mktemp("tiny")
+    book = root / "book"
+    book.mkdir()
+    for name, text in SYNTHETIC.items():
+        (book / name).write_text(text, encoding="utf-8")
+    sites = {}
+    for name, extra in (("full", []), ("student", ["-D", "hide_solutions=1"])):
+        proc = subprocess.run(
+            [sys.executable, "-m", "sphinx", "-W", "--keep-going", "-E", "-q", *extra,
+             "-b", "html", str(book), str(root / name)],
+            capture_output=True, text=True, timeout=600)
+        assert proc.returncode == 0, proc.stdout + proc.stderr
+        sites[name] = root / name
+    return sites
 
 
 BROWSERS = ["chromium", "chromium-browser", "google-chrome", "google-chrome-stable"]

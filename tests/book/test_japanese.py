@@ -16,6 +16,7 @@ from pathlib import Path
 
 import pytest
 
+from tests.book._buildcheck import BookIndex
 from tests.conftest import BOOK, ROOT, Build
 
 JAPANESE_CHAR = re.compile(r"[\u3040-\u30ff\u4e00-\u9fff]")
@@ -188,18 +189,17 @@ def test_every_message_is_translated_and_whole(gettext_build: Build) -> None:
 
 @pytest.mark.parametrize("site", ["instructor", "student"])
 def test_the_japanese_sites_offer_japanese_notebooks(
-    site: str, book_ja_build: Build, student_ja_build: Build
+    site: str, book_ja_build: Build, student_ja_build: Build, index: BookIndex
 ) -> None:
     # Each chapter's download menu points into the edition's own classroom/ folder, at a
     # file that is there; the notebooks and the README there are in Japanese, with the
-    # English edition's code (tests/i18n/test_classroom_ja.py compares them cell by cell).
+    # English edition's code (compared cell by cell below).
     import nbformat
 
     from tools.classroom import bundle
-    from tools.classroom.labels import scan
 
     ja = _ok(book_ja_build if site == "instructor" else student_ja_build)
-    files = scan(BOOK).files
+    files = index.files
     editions = ("student", "instructor") if site == "instructor" else ("student",)
     for page, name in files.items():
         html = (ja / f"{page}.html").read_text(encoding="utf-8")
@@ -229,3 +229,70 @@ def test_the_japanese_sites_offer_japanese_notebooks(
             text = path.read_text(encoding="utf-8")
             assert re.search(r"#+ 演習 \d+ の解答", text) is None, path
         assert not (ja / "classroom" / "instructor").exists()
+
+
+# --- The Japanese notebooks against the English ones ---------------------------------------
+# Both are written from their build's doctrees (tools/classroom/doctree.py); the English
+# notebooks are the reference for everything that is not prose: the same cells, the same
+# code, the same anchors, links and display formulas.
+ANCHOR = re.compile(r'<a id="([^"]+)"></a>')
+LINK = re.compile(r"\]\(([^)\s]*)\)")
+DISPLAY = re.compile(r"\$\$(.+?)\$\$", re.S)
+PLACEHOLDER = re.compile(r"^\w+ = \.\.\.  # .*$", re.M)
+
+
+@pytest.mark.parametrize("edition", ["student", "instructor"])
+def test_the_japanese_notebook_is_the_english_one_in_japanese(
+        edition: str, built_book: Path, book_ja_build: Build) -> None:
+    import nbformat
+
+    from tools.i18n import status
+
+    ja_site = _ok(book_ja_build)
+    english = sorted((built_book / "classroom" / edition).glob("*.ipynb"))
+    japanese = sorted((ja_site / "classroom" / edition).glob("*.ipynb"))
+    assert [p.name for p in japanese] == [p.name for p in english] and english
+    for path_en, path_ja in zip(english, japanese, strict=True):
+        en, ja = (nbformat.read(p, as_version=4) for p in (path_en, path_ja))
+        page = path_en.name
+        assert [c.cell_type for c in ja.cells] == [c.cell_type for c in en.cells], page
+        for c_en, c_ja in zip(en.cells, ja.cells, strict=True):
+            if c_en.cell_type == "code":  # the same code; only the answer cell's comment
+                # The Japanese self-checks ask for their language (language='ja').
+                assert (PLACEHOLDER.sub("", c_ja.source).replace("language='ja', ", "")
+                        == PLACEHOLDER.sub("", c_en.source)), page
+                assert c_ja.metadata == c_en.metadata, page
+                continue
+            assert ANCHOR.findall(c_ja.source) == ANCHOR.findall(c_en.source), page
+            assert sorted(LINK.findall(c_ja.source)) == sorted(LINK.findall(c_en.source)), page
+            assert DISPLAY.findall(c_ja.source) == DISPLAY.findall(c_en.source), page
+            # Emphasis that CommonMark reads as such next to Japanese brackets (the
+            # catalogs' checker, tools/i18n/status.py, finds asterisks left as text).
+            assert status._stray_asterisks(c_ja.source) <= status._stray_asterisks(
+                c_en.source), (page, c_ja.source[:200])
+            prose = DISPLAY.sub("", ANCHOR.sub("", c_en.source))
+            if re.search(r"[A-Za-z]{4,} [a-z]{3,} [a-z]{3,}", prose):  # a sentence
+                assert JAPANESE_CHAR.search(c_ja.source), (page, c_ja.source[:200])
+
+
+def test_the_notebooks_own_words_are_japanese(book_ja_build: Build) -> None:
+    # The headings the Japanese edition of the book gives the same things
+    # (book/_ext/i18n.py: 演習 3 の解答; sphinx-proof and our catalogs: 補題, 証明, 図).
+    import nbformat
+
+    ja_site = _ok(book_ja_build)
+
+    def text(edition: str) -> str:
+        return "\n".join(c.source for p in sorted((ja_site / "classroom" / edition).glob(
+            "*.ipynb")) for c in nbformat.read(p, as_version=4).cells
+            if c.cell_type == "markdown")
+
+    student, teacher = text("student"), text("instructor")
+    assert re.search(r"^#### 演習 \d+$", student, re.M)
+    assert re.search(r"^#### 演習 \d+ の解答$", teacher, re.M)
+    assert "**補題 2（" in teacher and "**証明**" in teacher and "**図 1**" in teacher
+    assert "**あなたの結果**" in student and "<b>ヒント</b>" in student
+    assert "## 参考文献" in teacher
+    for english in ("Exercise", "Solution to", "Your results", "Your answer", "Fig. ",
+                    "Proof", "classroom notebook", "## References"):
+        assert english not in student + teacher, english

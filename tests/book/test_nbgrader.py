@@ -27,6 +27,7 @@ from pathlib import Path
 import nbformat
 import pytest
 
+from tests.book._buildcheck import BookIndex
 from tools.classroom import nbgrader as course
 
 pytestmark = pytest.mark.slow
@@ -110,12 +111,11 @@ def graded(nbgrader_job: Future) -> dict:
 
 
 
-def test_one_assignment_per_chapter_with_exercises(graded: dict, built_book: Path) -> None:
+def test_one_assignment_per_chapter_with_exercises(graded: dict, built_book: Path,
+                                                   index: BookIndex) -> None:
     from tests.conftest import BOOK
-    from tools.classroom.labels import scan
 
-    book = scan(BOOK)
-    with_exercises = {book.files[p].removesuffix(".ipynb") for p in book.exported
+    with_exercises = {index.files[p].removesuffix(".ipynb") for p in index.exported
                       if ":::{exercise}" in (BOOK / f"{p}.md").read_text(encoding="utf-8")}
     assert set(graded["points"]) == with_exercises
     assert all(auto + manual > 0 for auto, manual in graded["points"].values())

@@ -27,8 +27,8 @@ from typing import Any
 import pytest
 from babel.messages.pofile import read_po
 
+from tests.book._buildcheck import BookIndex
 from tests.conftest import BOOK, Build
-from tools.classroom.labels import scan
 from tools.pdf import build as build_pdf
 
 pytestmark = pytest.mark.slow
@@ -71,8 +71,7 @@ def _translated(page: str, text: str) -> str:
     return str(message.string)
 
 
-def _editions() -> dict[str, Edition]:
-    titles = scan(BOOK).titles
+def _editions(titles: dict[str, str]) -> dict[str, Edition]:
     english = Edition(
         "en", [t for doc, t in titles.items() if doc != "index"], "Fig. {}", "Exercise {}",
         r"Solution to\s*Exercise \d+", "Contents",
@@ -94,7 +93,15 @@ def _editions() -> dict[str, Edition]:
             "book-student-ja": japanese}
 
 
-EDITIONS = _editions()
+EDITION_NAMES = ("book", "book-student", "book-ja", "book-student-ja")
+
+
+@pytest.fixture(scope="module")
+def editions(index: BookIndex) -> dict[str, Edition]:
+    """What each PDF must say, from the chapter titles of the session's English build."""
+    return _editions(index.titles)
+
+
 TEACHERS = {"book": "book-student", "book-ja": "book-student-ja"}
 
 
@@ -126,20 +133,20 @@ def pdfs(pdf_job: Future, docs_build: Build) -> dict:
 
 def test_every_edition_is_printed(pdfs: dict) -> None:
     # The four of `make pdf`: this module's expectations cover each of them.
-    assert sorted(pdfs["texts"]) == sorted(build_pdf.EDITIONS) == sorted(EDITIONS)
+    assert sorted(pdfs["texts"]) == sorted(build_pdf.EDITIONS) == sorted(EDITION_NAMES)
 
 
-def test_the_pdfs_have_a_plausible_length(pdfs: dict) -> None:
-    chapters = len(scan(BOOK).pages)
+def test_the_pdfs_have_a_plausible_length(pdfs: dict, index: BookIndex) -> None:
+    chapters = len(index.pages)
     for name, student in TEACHERS.items():
         teacher, pupil = pdfs["texts"][name], pdfs["texts"][student]
         # Every chapter starts on a new page and runs over several; the solutions add pages.
         assert 3 * chapters < len(pupil) < len(teacher) < 1000, name
 
 
-def test_chapter_titles_are_text(pdfs: dict) -> None:
+def test_chapter_titles_are_text(pdfs: dict, editions: dict[str, Edition]) -> None:
     for name, pages in pdfs["texts"].items():
-        edition = EDITIONS[name]
+        edition = editions[name]
         text = edition.key(" ".join(pages))
         missing = [t for t in edition.chapters if edition.key(t) not in text]
         assert missing == [], (name, missing)
@@ -157,12 +164,14 @@ def _fonts(reader: Any) -> dict[str, str]:
     return {name: "".join(texts) for name, texts in drawn.items()}
 
 
-def test_japanese_body_is_mincho_and_headings_gothic(pdfs: dict) -> None:
+def test_japanese_body_is_mincho_and_headings_gothic(
+    pdfs: dict, editions: dict[str, Edition],
+) -> None:
     # The print stylesheet (book/_ext/static/classroom_print.css): IPA P Mincho for the
     # body, IPA P Gothic for the headings. Without it Chromium sets Japanese in its
     # default sans-serif (the Gothic, or a Noto face) and there is no Mincho at all.
     for name in ("book-ja", "book-student-ja"):
-        edition = EDITIONS[name]
+        edition = editions[name]
         fonts = {f: edition.key(text) for f, text in _fonts(pdfs["readers"][name]).items()}
         sizes = Counter({f: len(text) for f, text in fonts.items()})
         mincho = sum(n for f, n in sizes.items() if "Mincho" in f)
@@ -197,22 +206,26 @@ def test_equation_numbers_are_text(pdfs: dict) -> None:
         assert tags - found == set(), (name, sorted(tags - found, key=int))
 
 
-def test_formulas_and_figures_were_drawn(pdfs: dict) -> None:
+def test_formulas_and_figures_were_drawn(
+    pdfs: dict, editions: dict[str, Edition], index: BookIndex,
+) -> None:
     for name, seen in pdfs["report"].items():
         assert seen["formulas"] > 500, (name, seen)  # MathJax typeset the whole book
         assert seen["images"] > 5, (name, seen)  # and print_pdf refuses an image not loaded
-    figures = {t.number for t in scan(BOOK).targets.values() if t.kind == "figure" and t.number}
+    figures = set(index.figure_numbers.values())
     for name in TEACHERS:
-        edition = EDITIONS[name]
+        edition = editions[name]
         text = edition.key("\n".join(pdfs["texts"][name]))
         labels = {n for n in figures if edition.key(edition.figure.format(n)) in text}
         assert labels == figures, name
 
 
-def test_solutions_open_for_instructors_absent_for_students(pdfs: dict) -> None:
-    exercises = len(scan(BOOK).exercise_numbers)
+def test_solutions_open_for_instructors_absent_for_students(
+    pdfs: dict, editions: dict[str, Edition], index: BookIndex,
+) -> None:
+    exercises = len(index.exercise_numbers)
     for name, pupil in TEACHERS.items():
-        edition = EDITIONS[name]
+        edition = editions[name]
         teacher = "\n".join(pdfs["texts"][name])
         student = edition.key("\n".join(pdfs["texts"][pupil]))
         assert pdfs["report"][name]["solutions"] == exercises, name
@@ -221,16 +234,16 @@ def test_solutions_open_for_instructors_absent_for_students(pdfs: dict) -> None:
             assert "Solution" not in re.sub(r"Solutions? of", "", student)
         else:  # 解答 is also in the teacher's guide's title and the intro's prose
             assert not re.search(edition.solution, student), pupil
-        for number in scan(BOOK).exercise_numbers.values():  # the exercises, same numbers
+        for number in index.exercise_numbers.values():  # the exercises, same numbers
             assert edition.key(edition.exercise.format(number)) in student, (pupil, number)
 
 
-def test_every_exercise_prints_its_hint_open(pdfs: dict) -> None:
+def test_every_exercise_prints_its_hint_open(pdfs: dict, index: BookIndex) -> None:
     # One hint per exercise (book/_ext/classroom.py), opened by the printer in both editions;
     # the text of the first written hint of the registry is on paper.
     from elliptic_pendulum import selfcheck
 
-    exercises = len(scan(BOOK).exercise_numbers)
+    exercises = len(index.exercise_numbers)
     # The longest stretch of a hint without math or roles: plain text on paper too.
     plain = max((re.split(r"[${`*]", e.written)[0] for e in selfcheck.EXERCISES.values()
                  if e.written), key=len)
@@ -284,13 +297,13 @@ def _contents(pages: list[str], edition: Edition) -> dict[str, int]:
     return found
 
 
-def test_outline_lists_every_chapter_on_its_page(pdfs: dict) -> None:
+def test_outline_lists_every_chapter_on_its_page(pdfs: dict, editions: dict[str, Edition]) -> None:
     # printToPDF(generateDocumentOutline) makes the outline from the headings; without it
     # (or without the tags it is built from) reader.outline is empty.
     for name, reader in pdfs["readers"].items():
         outline = _outline(reader)
         pages = pdfs["texts"][name]
-        edition = EDITIONS[name]
+        edition = editions[name]
         for title in edition.chapters:
             # Chromium writes a heading at the top of a page twice into its entry
             # ("ConventionsConventions"): the title is in it.
@@ -319,11 +332,11 @@ def test_every_page_has_its_number_in_the_footer(pdfs: dict) -> None:
         assert wrong == [], (name, wrong[:10])
 
 
-def test_contents_give_the_page_of_each_chapter(pdfs: dict) -> None:
+def test_contents_give_the_page_of_each_chapter(pdfs: dict, editions: dict[str, Edition]) -> None:
     # The printer reads where each chapter landed and writes it into the contents: the
     # number printed beside a title is the page on which that title starts its chapter.
     for name, pages in pdfs["texts"].items():
-        edition = EDITIONS[name]
+        edition = editions[name]
         contents = _contents(pages, edition)
         chapters = edition.chapters
         assert sorted(contents) == sorted(chapters), (name, set(chapters) - set(contents))
@@ -335,13 +348,15 @@ def test_contents_give_the_page_of_each_chapter(pdfs: dict) -> None:
         assert sum(p.splitlines().count(edition.contents) for p in pages) == 1, name
 
 
-def test_title_page_states_edition_version_date_and_licence(pdfs: dict) -> None:
+def test_title_page_states_edition_version_date_and_licence(
+    pdfs: dict, editions: dict[str, Edition], index: BookIndex,
+) -> None:
     # tools/pdf/build.py's title_page; the licences of book/about.md.
     version = importlib.metadata.version("elliptic-pendulum")
-    title = scan(BOOK).titles["index"]
+    title = index.titles["index"]
     titles = {"en": title, "ja": _translated("index", title)}
     for name, pages in pdfs["texts"].items():
-        edition = EDITIONS[name]
+        edition = editions[name]
         first = edition.key(pages[0])
         assert edition.key(titles[edition.language]) in first, name
         assert edition.key(edition.edition[name]) in first, (name, first)
@@ -350,9 +365,9 @@ def test_title_page_states_edition_version_date_and_licence(pdfs: dict) -> None:
         assert edition.key(edition.licence) in first, (name, first)
 
 
-def test_no_screen_controls_are_printed(pdfs: dict) -> None:
+def test_no_screen_controls_are_printed(pdfs: dict, editions: dict[str, Edition]) -> None:
     for name, pages in pdfs["texts"].items():
-        edition = EDITIONS[name]
+        edition = editions[name]
         # The introduction names the toggle in quotes, as text ("the code under “Show
         # code cell source”", 「コードを表示」): a quoted name is no control.
         text = re.sub(r"\u201c[^\u201d]*\u201d|\u300c[^\u300d]*\u300d", "",

@@ -47,7 +47,6 @@ import pytest
 
 from tests.book.test_browser import Browser
 from tests.conftest import BOOK, DOCS, ROOT, SUMMARY, Build
-from tools.classroom.markdown import DIRECTIVE_OPEN, strip_solutions
 
 # Plain <a href> links out of the site (never a src, a <link> or a <script>): where a reader
 # goes to read more, nothing that a page needs in order to work. Only these are allowed:
@@ -361,10 +360,14 @@ MARKUP = re.compile(r"\$\$?[^$]*\$\$?|\{[\w:+-]+\}`[^`]*`|`[^`]*`|[*_|\\]{1,2}|^
 MIN_LENGTH = 24
 
 
-def solutions(text: str) -> list[list[str]]:
+# A MyST directive's opening line: its fence and its name.
+DIRECTIVE_OPEN = re.compile(r"^(?P<fence>`{3,}|:{3,})\{(?P<name>[^}]+)\}\s*(?P<arg>.*)$")
+
+
+def solutions(text: str, keep: list[str] | None = None) -> list[list[str]]:
     """The source lines of each solution of a page: ``{solution-start}`` .. ``{solution-end}``
-    blocks (as tools/classroom/markdown.strip_solutions finds them) and ``{solution}``
-    directives, their directive lines and options left out."""
+    blocks and ``{solution}`` directives, their directive lines and options left out. The
+    lines outside every solution go to ``keep``, if given."""
     found: list[list[str]] = []
     lines = text.splitlines()
     i, current = 0, None
@@ -389,8 +392,17 @@ def solutions(text: str) -> list[list[str]]:
             continue
         if current is not None:
             current.append(lines[i])
+        elif keep is not None:
+            keep.append(lines[i])
         i += 1
     return found
+
+
+def without_solutions(text: str) -> str:
+    """A page's source with every solution left out."""
+    kept: list[str] = []
+    solutions(text, kept)
+    return "\n".join(kept)
 
 
 def _squash(text: str) -> str:
@@ -421,7 +433,7 @@ def solution_snippets() -> dict[str, set[str]]:
     """``page:n`` -> the snippets of the n-th solution of the page, less those that the
     published text holds anyway (the book without solutions, the reference's sources and
     the package's docstrings), which would prove nothing."""
-    public = [strip_solutions(p.read_text(encoding="utf-8")) for p in sorted(BOOK.glob("*.md"))]
+    public = [without_solutions(p.read_text(encoding="utf-8")) for p in sorted(BOOK.glob("*.md"))]
     public += [p.read_text(encoding="utf-8") for p in sorted(DOCS.glob("*.md"))]
     public += [p.read_text(encoding="utf-8") for p in sorted((ROOT / "src").rglob("*.py"))]
     public_text = _squash("\n".join(public))

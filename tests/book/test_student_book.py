@@ -10,18 +10,14 @@ of the instructor site's build serves) and removes the solutions from the doctre
 from __future__ import annotations
 
 import re
-import subprocess
-import sys
 import zipfile
 from pathlib import Path
 
 import pytest
 
-from tests.book.test_notebooks import SYNTHETIC
-from tests.conftest import BOOK, Build
+from tests.book._buildcheck import BookIndex
+from tests.conftest import Build
 from tools.classroom import bundle
-from tools.classroom import export as ex
-from tools.classroom.labels import scan
 
 EXERCISE = re.compile(
     r'<div class="exercise[^"]*" id="(?P<label>[^"]+)">\s*<p class="admonition-title">'
@@ -29,46 +25,25 @@ EXERCISE = re.compile(
 )
 
 
-def _tiny(tmp_path: Path) -> Path:
-    book = tmp_path / "tiny"
-    book.mkdir()
-    for name, text in SYNTHETIC.items():
-        (book / name).write_text(text, encoding="utf-8")
-    return book
-
-
-def _build_tiny(book: Path, out: Path, *extra: str) -> subprocess.CompletedProcess[str]:
-    return subprocess.run(
-        [sys.executable, "-m", "sphinx", "-W", "--keep-going", "-E", "-q", *extra,
-         "-b", "html", str(book), str(out)],
-        capture_output=True, text=True, timeout=600,
-    )
-
-
 @pytest.mark.slow
-def test_hide_solutions_builds_and_drops_gated_solutions(tmp_path: Path) -> None:
-    book = _tiny(tmp_path)
-    full = _build_tiny(book, tmp_path / "full")
-    student = _build_tiny(book, tmp_path / "student", "-D", "hide_solutions=1")
-    assert full.returncode == 0, full.stdout + full.stderr
-    assert student.returncode == 0, student.stdout + student.stderr
+def test_hide_solutions_builds_and_drops_gated_solutions(tiny_sites: dict) -> None:
     shown, hidden = (
-        re.sub(r"<[^>]+>", "", (tmp_path / b / "alpha.html").read_text(encoding="utf-8"))
+        re.sub(r"<[^>]+>", "", (tiny_sites[b] / "alpha.html").read_text(encoding="utf-8"))
         for b in ("full", "student")
     )
     for text in ("Worked.", "answer = 42"):  # the solution's text and its cell
         assert text in shown and text not in hidden
     assert "Compute." in hidden and "Exercise 2" in hidden
     # The student build holds only the student edition.
-    assert (tmp_path / "student" / "classroom" / "student" / "02-alpha.ipynb").exists()
-    assert not (tmp_path / "student" / "classroom" / "instructor").exists()
+    assert (tiny_sites["student"] / "classroom" / "student" / "02-alpha.ipynb").exists()
+    assert not (tiny_sites["student"] / "classroom" / "instructor").exists()
 
 
 @pytest.mark.slow
-def test_student_book_has_exercises_and_no_solutions(student_book: Build) -> None:
+def test_student_book_has_exercises_and_no_solutions(student_book: Build,
+                                                     index: BookIndex) -> None:
     assert student_book.returncode == 0, student_book.output[-3000:]
     assert student_book.warnings == []
-    index = scan(BOOK)
     seen = {}
     for page in index.pages:
         html = (student_book.outdir / f"{page}.html").read_text(encoding="utf-8")
@@ -83,12 +58,11 @@ def test_student_book_has_exercises_and_no_solutions(student_book: Build) -> Non
 
 @pytest.mark.slow
 def test_every_exercise_has_its_folded_hint_in_both_sites(
-        student_book: Build, built_book: Path) -> None:
+        student_book: Build, built_book: Path, index: BookIndex) -> None:
     # book/_ext/classroom.py adds a dropdown "Hint" under each exercise, from its self-check
-    # (tools/classroom/selfcheck): as many per page as the page has exercises.
+    # (elliptic_pendulum.selfcheck): as many per page as the page has exercises.
     from elliptic_pendulum import selfcheck
 
-    index = scan(BOOK)
     for site in (student_book.outdir, built_book):
         for page in index.pages:
             html = (site / f"{page}.html").read_text(encoding="utf-8")
@@ -116,8 +90,7 @@ def test_the_teachers_guide_is_in_the_instructor_site_only(
 
 
 @pytest.mark.slow
-def test_book_offers_each_chapter_notebook(built_book: Path) -> None:
-    index = scan(BOOK)
+def test_book_offers_each_chapter_notebook(built_book: Path, index: BookIndex) -> None:
     for page in index.exported:
         html = (built_book / f"{page}.html").read_text(encoding="utf-8")
         # The instructor site (the default build) offers both editions, and says it is
@@ -138,16 +111,27 @@ def test_book_offers_each_chapter_notebook(built_book: Path) -> None:
 
 
 @pytest.mark.slow
-def test_notebooks_in_the_build_paste_every_glued_value(built_book: Path) -> None:
+def test_notebooks_in_the_build_paste_every_glued_value(built_book: Path,
+                                                         index: BookIndex) -> None:
+    # Every value a page glues (myst-nb's <page>.glue.json of this build) is pasted into its
+    # notebooks' text as the page shows it: the page's text and the notebook's agree.
+    import json
+
     import nbformat
 
-    index = scan(BOOK)
     glued = 0
     for page in index.exported:
-        keys = ex.glue_from_build(built_book.parent / "jupyter_execute", page)
+        path = built_book.parent / "jupyter_execute" / f"{page}.glue.json"
+        keys = json.loads(path.read_text(encoding="utf-8")) if path.exists() else {}
+        html = re.sub(r"<[^>]+>", "", (built_book / f"{page}.html").read_text(encoding="utf-8"))
         for edition in ("student", "instructor"):
             nb = nbformat.read(built_book / "classroom" / edition / index.files[page], 4)
             text = "\n".join(c.source for c in nb.cells if c.cell_type == "markdown")
-            assert [k for k in keys if f"`{k}`" in text] == [], (page, edition)
+            assert "glue:" not in text and "{glue" not in text, (page, edition)
+        # One glued number, as the page shows it, is in the instructor's notebook.
+        for key, value in keys.items():
+            shown = value.get("data", {}).get("text/plain", "")
+            if re.fullmatch(r"-?\d+", shown) and len(shown) >= 3 and shown in html:
+                assert shown in text, (page, key)
         glued += len(keys)
     assert glued > 50  # the values came from this build's jupyter_execute folder

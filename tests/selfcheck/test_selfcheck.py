@@ -17,7 +17,6 @@ import pytest
 
 from elliptic_pendulum import selfcheck
 from tests.conftest import BOOK
-from tools.classroom.labels import scan
 
 VALUES = [(label, value) for label, ex in sorted(selfcheck.EXERCISES.items())
           for value in ex.values]
@@ -28,11 +27,26 @@ def _said(capsys: pytest.CaptureFixture[str]) -> str:
     return capsys.readouterr().out
 
 
-def test_every_exercise_of_the_book_has_a_self_check() -> None:
-    # The labels come from the book's pages (labels.scan), the registry from the modules.
-    exercises = set(scan(BOOK).exercise_numbers)
+def _exercises_of_the_pages() -> dict[str, str]:
+    """label -> page, from the {exercise} directives of the book's sources."""
+    found = {}
+    for path in sorted(BOOK.glob("*.md")):
+        text = path.read_text(encoding="utf-8")
+        for m in re.finditer(r"^:{3,}\{exercise\}[^\n]*\n:label: (\S+)", text, re.M):
+            found[m[1]] = path.stem
+    return found
+
+
+def test_every_exercise_of_the_book_has_a_self_check_in_its_chapters_module() -> None:
+    # The labels come from the book's pages, the registry from the modules: one module per
+    # chapter, named after its page.
+    exercises = _exercises_of_the_pages()
     assert exercises, "no exercise found in the book"
-    assert set(selfcheck.EXERCISES) == exercises
+    assert set(selfcheck.EXERCISES) == set(exercises)
+    for label, exercise in selfcheck.EXERCISES.items():
+        module = exercise.reference.__module__ if exercise.reference else None
+        if module is not None:
+            assert module.rsplit(".", 1)[1] == exercises[label], label
 
 
 def test_references_give_every_value_of_its_kind() -> None:

@@ -1,6 +1,9 @@
-"""The book's MyST pages as plain Jupyter notebooks, a student and an instructor edition.
+"""The classroom: the book's pages as Jupyter notebooks, the bundles a student installs, the
+nbgrader course.
 
-:mod:`.export` writes the notebooks; :mod:`.markdown` turns MyST into plain Markdown;
-:mod:`.labels` numbers the exercises as the book does; :mod:`.bib` writes the references.
-The Sphinx extension ``book/_ext/classroom.py`` uses the same modules.
+:mod:`.doctree` writes a page's resolved doctree as notebook cells; :mod:`.export` makes the
+student and instructor notebooks of one build (the Sphinx extension book/_ext/classroom.py
+calls it); :mod:`.words` holds the notebooks' own words in each language; :mod:`.bundle`
+adds the wheel, requirements.txt and a README and zips an edition; :mod:`.nbgrader` turns the
+instructor notebooks into an nbgrader course.
 """

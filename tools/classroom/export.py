@@ -1,54 +1,39 @@
-"""Export the book's MyST pages as plain Jupyter notebooks, in a student and an instructor edition.
+"""The classroom notebooks of one build of the book, a student and an instructor edition.
 
-``notebooks/student/NN-page.ipynb`` and ``notebooks/instructor/NN-page.ipynb``, NN the reading
-order of the book's toctree (00 is the first page, which lists the chapters). Markdown is plain
-(see markdown.py); exercises keep the book's numbers (labels.py). Student:
-each exercise is followed by an empty code cell and the solutions are left out. Instructor:
-each solution opens with a "Solution to Exercise N" heading, then its worked cells.
+``<outdir>/classroom/<edition>/NN-page.ipynb``, NN the page's place in the reading order of
+the book's toctree (00 is the first page, which lists the chapters). Each notebook is written
+from the doctree Sphinx resolved for its page in this build (doctree.py), so it says what the
+page says, in the build's language, with the page's numbers and glued values. The student
+edition is written from the tree without its solutions, and gets cells for the answers under
+each exercise; the instructor edition keeps each solution, headed "Solution to Exercise N",
+with the self-check cell after it.
 
 The code needs only the package: ``from myst_nb import glue`` becomes a three-line stand-in
-that keeps the values in a dict. The glued numbers of the text come from one execution of the
-instructor edition (``--execute``; this also proves the cells run), or from the notebooks that
-a book build has just executed (``--glue-from book/_build/jupyter_execute``, used by the Sphinx
-extension book/_ext/classroom.py, whose HTML shows the same values). Values are formatted as
-myst-nb formats ``{glue:text}`name:fmt``` so integers stay integers.
-
-Each edition's folder also gets what a student needs to run it (bundle.py: the package's
-wheel, requirements.txt, a README) and is zipped as ``notebooks/<name>-<edition>.zip``.
-
-``--language ja`` makes the Japanese notebooks: each Markdown cell goes through its page's
-catalog in book/locale before it is converted (translation.py), the exporter's own words are
-Japanese (words.py), and so are the self-checks' answers and the bundle's README. The code
-cells are the English ones.
-
-Usage::
-
-    python -m tools.classroom book notebooks [--execute | --glue-from DIR] [--language ja]
+that keeps the values in a dict. The book's Sphinx extension (book/_ext/classroom.py) calls
+:func:`export` once its pages are written; bundle.py then adds what a student needs to run
+them.
 """
 
 from __future__ import annotations
 
-import argparse
-import json
 import re
-import sys
-from ast import literal_eval
 from pathlib import Path
+from typing import Any
 
-import jupytext
 import nbformat
+from docutils import nodes
+from myst_nb.core.read import read_myst_markdown_notebook
 
 from elliptic_pendulum import selfcheck
 
-from . import bundle, translation
-from .bib import label as bib_label
-from .bib import load as load_bib
-from .bib import reference_line
-from .labels import Book, scan
-from .markdown import SENTINEL, Context, Target, convert_markdown
-from .words import ENGLISH, WORDS, Words, words
+from . import bundle, doctree
+from .words import Words, words
 
 EDITIONS = ("student", "instructor")
+# Pages of the book that are not lessons and cannot run away from it: the registry of checks
+# reads the checks the build found in the pages and displays MyST tables. They keep their
+# place in the book's numbering, but get no notebook; a link to them keeps its text only.
+BOOK_ONLY_PAGES = {"checks"}
 GLUE_IMPORT = re.compile(r"^\s*from\s+myst_nb\s+import\s+glue\s*$", re.MULTILINE)
 GLUE_STANDIN = """\
 import IPython.display
@@ -63,12 +48,6 @@ def glue(name, value, display=True):
     if display:
         IPython.display.display(value)
 """
-GLUE_HARVEST = (
-    "import json as _json\n"
-    "_fmt = get_ipython().display_formatter.format\n"
-    "print('GLUED' + _json.dumps({k: _fmt(v)[0].get('text/plain', '') "
-    "for k, v in globals().get('glued', {}).items()}))"
-)
 BOOK_ONLY = re.compile(r"^\s*(import|from)\s+(myst_nb|sphinx\w*|docutils)\b", re.MULTILINE)
 # The book's folding tags, as Jupyter's own collapsed metadata.
 HIDDEN = {
@@ -79,74 +58,67 @@ HIDDEN = {
 }
 
 
-def format_glue(text: str, fmt: str) -> str:
-    """myst-nb's format_plain_text: the text/plain of the value, formatted by the role's spec."""
-    try:
-        value: object = literal_eval(text)
-    except (SyntaxError, ValueError):
-        value = text
-    if fmt == "":
-        return str(value)
-    kind = fmt[-1]
-    if kind == "s":
-        value = str(value)
-    elif kind in "bcdoxX":
-        value = int(value)  # type: ignore[call-overload]
-    elif kind in "eEfFgGn%":
-        value = float(value)  # type: ignore[arg-type]
-    return format(value, fmt)
+def reading_order(env: Any, root: str = "index") -> list[str]:
+    """The notebook pages (executed by myst-nb) in the order of the toctrees, root first."""
+    order: list[str] = []
+
+    def visit(doc: str) -> None:
+        if doc in order:
+            return
+        order.append(doc)
+        for child in env.toctree_includes.get(doc, []):
+            visit(child)
+
+    visit(root)
+    return [d for d in order if "kernelspec" in env.metadata.get(d, {})]
 
 
-def _code_cell(cell: nbformat.NotebookNode, first_glue: list[bool]) -> None:
-    source = cell.source
+def notebook_files(env: Any) -> dict[str, str]:
+    """docname -> its notebook's file name, for the pages that have one."""
+    return {doc: f"{i:02d}-{doc}.ipynb" for i, doc in enumerate(reading_order(env))
+            if doc not in BOOK_ONLY_PAGES}
+
+
+def _numbers(env: Any, docname: str) -> dict[str, str]:
+    found = env.toc_fignumbers.get(docname, {})
+    return {i: ".".join(map(str, n)) for kind in found.values() for i, n in kind.items()}
+
+
+def _exercise_numbers(env: Any) -> dict[str, str]:
+    return {i: ".".join(map(str, n)) for found in env.toc_fignumbers.values()
+            for i, n in found.get("exercise", {}).items()}
+
+
+def code_cell(source: str, metadata: dict, first_glue: list[bool]) -> nbformat.NotebookNode:
+    """A code cell of the book as a notebook's: no myst-nb, the book's folds as Jupyter's."""
     if GLUE_IMPORT.search(source):
         source = GLUE_IMPORT.sub("", source)
         if first_glue[0]:  # one stand-in per notebook, or the dict would start again
             # First in the cell: the rest of the cell may glue already.
             source = GLUE_STANDIN + "\n\n" + source
             first_glue[0] = False
-        cell.source = re.sub(r"\n{4,}", "\n\n\n", source).strip("\n")
-    if BOOK_ONLY.search(cell.source):
-        raise ValueError(f"a code cell needs myst_nb or Sphinx: {cell.source[:200]!r}")
-    # The figure's caption becomes a Markdown cell under it (_caption_cell); its alt text and
-    # options are the book's (MyST roles inside), which Jupyter neither shows nor reads.
-    cell.metadata.pop("mystnb", None)
-    hidden = {k for tag in cell.metadata.get("tags", []) for k in HIDDEN.get(tag, ())}
+        source = re.sub(r"\n{4,}", "\n\n\n", source).strip("\n")
+    if BOOK_ONLY.search(source):
+        raise ValueError(f"a code cell needs myst_nb or Sphinx: {source[:200]!r}")
+    # A figure's caption is a Markdown cell under it (doctree.py); its options are the book's.
+    metadata = {k: v for k, v in metadata.items() if k != "mystnb"}
+    hidden = {k for tag in metadata.get("tags", []) for k in HIDDEN.get(tag, ())}
     if hidden:
-        cell.metadata.setdefault("jupyter", {}).update({k: True for k in sorted(hidden)})
-    cell.outputs, cell.execution_count = [], None
+        metadata.setdefault("jupyter", {}).update({k: True for k in sorted(hidden)})
+    return nbformat.v4.new_code_cell(source, metadata=metadata)
 
 
-def _caption_cell(cell: nbformat.NotebookNode, book: Book, ctx: Context,
-                  catalog: translation.Catalog | None = None) -> list[str]:
-    figure = cell.metadata.get("mystnb", {}).get("figure", {})
-    if not figure.get("caption"):
-        return []
-    name = figure.get("name", "")
-    number = book.targets[name].number if name in book.targets else ""
-    caption = str(figure["caption"]).strip()
-    if catalog is not None:
-        caption = translation.translate(caption, catalog)
-    caption = convert_markdown(caption, ctx)
-    anchor = f'<a id="{name}"></a>\n\n' if name else ""
-    if not number:
-        return [anchor + caption]
-    return [anchor + ctx.words.figure_caption.format(number=number, caption=caption)]
-
-
-def first_cell(book: Book, page: str, edition: str, answers: bool = False,
-               language: Words = ENGLISH) -> str:
+def first_cell(title: str, page: str, edition: str, answers: bool, w: Words) -> str:
     """What a notebook says first: what it is, how to install what it needs if the import
     fails (the files beside it, bundle.py), and the licence of its text and figures."""
-    title = book.titles.get(page, page)
-    name = bundle.TITLE_JA if language.language == "ja" else bundle.TITLE
+    name = bundle.TITLE_JA if w.language == "ja" else bundle.TITLE
     lines = [
-        language.first.format(book=name, edition=language.edition[edition], title=title),
-        language.install.format(pip=bundle.pip_magic(), readme=bundle.README),
+        w.first.format(book=name, edition=w.edition[edition], title=title),
+        w.install.format(pip=bundle.pip_magic(), readme=bundle.README),
     ]
     if answers:
-        lines.append(language.answers_intro)
-    lines.append(language.licence.format(page=page, cc_by=bundle.CC_BY))
+        lines.append(w.answers_intro)
+    lines.append(w.licence.format(page=page, cc_by=bundle.CC_BY))
     return "\n\n".join(lines)
 
 
@@ -158,21 +130,21 @@ def _what(text: str, language: str) -> str:
 
     found = _ja.MESSAGES.get(text)
     if found is None:
-        raise translation.Untranslated(f"self-check text without a translation: {text[:80]!r}")
+        raise ValueError(f"self-check text without a translation: {text[:80]!r}")
     return found
 
 
-def answer_cells(label: str, ctx: Context,
-                 catalog: translation.Catalog | None = None) -> list[nbformat.NotebookNode]:
-    """What a student gets under an exercise: for its results, a cell that names them and
-    the self-check that reads them (elliptic_pendulum.selfcheck); for what it asks to prove
-    or explain, a Markdown cell to write in and a folded hint. An exercise without a
-    self-check gets one empty code cell."""
+def answer_cells(label: str, w: Words) -> list[nbformat.NotebookNode]:
+    """What a student gets under an exercise (after its folded hint, which the page has).
+
+    For its results, a cell that names them and the self-check that reads them
+    (elliptic_pendulum.selfcheck); for what it asks to prove or explain, a Markdown cell to
+    write in. An exercise without a self-check gets one empty code cell.
+    """
     exercise = selfcheck.EXERCISES.get(label)
     if exercise is None:
         return [nbformat.v4.new_code_cell("")]
     cells = []
-    w = ctx.words
     if exercise.values:
         names = w.result_separator.join(
             w.result_name.format(name=v.name, what=_what(v.what, w.language))
@@ -180,15 +152,8 @@ def answer_cells(label: str, ctx: Context,
         cells.append(nbformat.v4.new_markdown_cell(w.results.format(names=names)))
         cells.append(nbformat.v4.new_code_cell(
             "\n".join(w.placeholder.format(name=v.name) for v in exercise.values)))
-        cells.extend(self_check_cells(label, "student", w.language))
+        cells.extend(self_check_cells(label, w.language))
     if exercise.written is not None:
-        # The site shows the same hint under the exercise (book/_ext/classroom.py), so the
-        # page's catalog translates it.
-        written = exercise.written
-        if catalog is not None:
-            written = translation.translate(written, catalog)
-        hint = convert_markdown(written, ctx).strip()
-        cells.append(nbformat.v4.new_markdown_cell(w.hint.format(hint=hint)))
         cell = nbformat.v4.new_markdown_cell(w.answer)
         cell.metadata["classroom"] = {"written": label}
         cells.append(cell)
@@ -197,13 +162,12 @@ def answer_cells(label: str, ctx: Context,
     return cells
 
 
-def self_check_cells(label: str, edition: str,
-                     language: str = "en") -> list[nbformat.NotebookNode]:
+def self_check_cells(label: str, language: str = "en") -> list[nbformat.NotebookNode]:
     """The cell that runs the self-check of exercise ``label`` on the names of its results:
     under the student's answer cell, and under the instructor's solution (which it checks
     against the self-check's independent reference every time the notebook runs)."""
-    exercise = selfcheck.EXERCISES[label]
-    if not exercise.values:
+    exercise = selfcheck.EXERCISES.get(label)
+    if exercise is None or not exercise.values:
         return []
     args = ", ".join(f"{v.name}={v.name}" for v in exercise.values)
     # A translated edition's notebooks ask for their language: the check answers in it
@@ -216,134 +180,62 @@ def self_check_cells(label: str, edition: str,
     return [cell]
 
 
-def localize(book: Book, book_dir: Path, language: str) -> Book:
-    """The book's titles and link texts in ``language``: page and section titles from the
-    pages' catalogs, "Exercise 5", "Fig. 3", "Lemma 2" in the exporter's words."""
-    if language == "en":
-        return book
-    w = words(language)
-    catalogs = {page: translation.load(book_dir / "locale", language, page)
-                for page in book.pages}
-    titles = {page: catalogs[page].need(title) if page in catalogs else title
-              for page, title in book.titles.items()}
-    targets = {}
-    for label, t in book.targets.items():
-        title = t.title
-        if t.kind in ("section", "page", "other") and t.page in catalogs:
-            found = catalogs[t.page].get(title)
-            title = found if found is not None else (
-                catalogs[t.page].need(title) if t.kind == "section" else title)
-        elif t.kind == "exercise":
-            title = w.exercise.format(number=t.number).strip()
-        elif t.kind == "figure" and t.number:
-            title = w.figure.format(number=t.number)
-        elif t.kind == "statement":
-            kind = title.split(" ")[0].lower()
-            title = " ".join(p for p in (w.statement(kind), t.number) if p)
-        targets[label] = Target(t.page, t.kind, title, t.number)
-    for catalog in catalogs.values():
-        catalog.check()
-    return Book(book.pages, book.exported, book.files, titles, targets, book.exercise_numbers)
-
-
-def export_page(
-    book_dir: Path, book: Book, page: str, edition: str, glue: dict[str, str] | None,
-    language: str = "en",
-) -> nbformat.NotebookNode:
-    """One page as a plain notebook of one edition. glue=None leaves `name` placeholders.
-
-    language: the page's text through its catalog (translation.py) before it is converted,
-    and the exporter's own words in that language; ``book`` is then the localized one.
-    """
+def notebook(tree: Any, docname: str, edition: str, language: str, files: dict[str, str],
+             numbers: dict[str, str], exercises: dict[str, str],
+             sources: list[str] | None = None) -> nbformat.NotebookNode:
+    """One page's resolved doctree as the notebook of one edition."""
     if edition not in EDITIONS:
         raise ValueError(f"edition must be one of {EDITIONS}, not {edition!r}")
     w = words(language)
-    catalog = (None if language == "en"
-               else translation.load(book_dir / "locale", language, page))
-    bib = load_bib(book_dir / "references.bib")
-    cited: list[str] = []
-
-    def glued(key: str, fmt: str) -> str:
-        if glue is None:
-            return f"`{key}`"
-        if key not in glue:  # an error only if the text is kept (a student drops solutions)
-            return f"{SENTINEL}MISSING {key}{SENTINEL}"
-        try:
-            return format_glue(glue[key], fmt)
-        except ValueError as err:  # myst-nb refuses it too ("Failed to format text/plain")
-            raise ValueError(f"page {page!r}: glued {key!r} = {glue[key]!r} does not take "
-                             f"the format {fmt!r} ({err}); glue a Python float") from err
-
-    def cite(role: str, keys: list[str]) -> str:
-        links = []
-        for key in keys:
-            if key not in bib:
-                raise ValueError(f"page {page!r} cites {key!r}, which is not in references.bib")
-            cited.append(key)
-            who, year = bib_label(bib[key])
-            text = f"{who} [{year}]" if role in {"cite:t", "cite:ts"} else f"{who}, {year}"
-            links.append(f"[{text}](#ref-{key})")
-        joined = "; ".join(links)
-        return joined if role in {"cite:t", "cite:ts"} else f"\\[{joined}\\]"
-
-    ctx = Context(page, book.files, book.titles, book.targets, glued, cite,
-                  book.exercise_numbers, book.exported[1:], w)
-    nb = jupytext.read(book_dir / f"{page}.md", fmt="md:myst")
-    cells: list[nbformat.NotebookNode] = []
-    in_solution, first_glue, answers, current = False, [True], False, ""
-
-    def mark(cell: nbformat.NotebookNode) -> nbformat.NotebookNode:
-        # The instructor's solution cells say whose they are (tools/classroom/nbgrader.py
-        # turns them into nbgrader's answer cells).
-        if in_solution:
-            cell.metadata["classroom"] = {"solution": current}
-        return cell
-
-    for cell in nb.cells:
-        if cell.cell_type == "code":
-            if not in_solution or edition == "instructor":
-                captions = _caption_cell(cell, book, ctx, catalog)
-                _code_cell(cell, first_glue)
-                cells.append(mark(cell))
-                cells.extend(mark(nbformat.v4.new_markdown_cell(t)) for t in captions)
-            continue
-        source = cell.source if catalog is None else translation.translate(cell.source, catalog)
-        text = convert_markdown(source, ctx)
-        pieces = re.split(f"^{SENTINEL}(\\w[\\w:-]*){SENTINEL}$", text, flags=re.MULTILINE)
-        for index, piece in enumerate(pieces):
-            marker, _, label = piece.partition(":") if index % 2 else ("", "", "")
-            if marker == "ANSWER":
-                if edition == "student":
-                    cells.extend(answer_cells(label, ctx, catalog))
-                    answers = True
-            elif marker == "SOLUTION-START":
-                in_solution, current = True, label
-            elif marker == "SOLUTION-END":
-                in_solution = False
-                if edition == "instructor" and current in selfcheck.EXERCISES:
-                    cells.extend(self_check_cells(current, edition, ctx.words.language))
-            elif piece.strip() and (not in_solution or edition == "instructor"):
-                missing = re.search(f"{SENTINEL}MISSING (.*?){SENTINEL}", piece)
-                if missing:
-                    raise ValueError(f"page {page!r} pastes {missing[1]!r}, which no cell glues")
-                cells.append(mark(nbformat.v4.new_markdown_cell(piece.strip("\n"))))
-    if in_solution:
-        raise ValueError(f"page {page!r}: a solution-start has no solution-end")
-    if cited:
-        keys = list(dict.fromkeys(cited))
-        cells.append(nbformat.v4.new_markdown_cell(
-            f"## {w.references}\n\n" + "\n".join(reference_line(k, bib[k]) for k in keys)))
-    if catalog is not None:
-        catalog.check()  # a Japanese notebook holds no English paragraph
-    out = nbformat.v4.new_notebook()
-    out.cells = [nbformat.v4.new_markdown_cell(first_cell(book, page, edition, answers, w)),
-                 *cells]
-    out.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",
-                                  "language": "python"}
-    out.metadata["language_info"] = {"name": "python"}
-    for i, c in enumerate(out.cells):  # stable ids: a re-export changes no unchanged cell
+    tree = tree.deepcopy()
+    if edition == "student":
+        doctree.remove_solutions(tree)
+    first_glue = [True]
+    page = doctree.Page(
+        docname, edition, w, files, numbers, exercises=exercises, sources=sources or [],
+        answer_cells=lambda label: answer_cells(label, w),
+        check_cells=lambda label: self_check_cells(label, language),
+        code_cell=lambda source, metadata: code_cell(source, metadata, first_glue),
+    )
+    cells = doctree.cells(tree, page)
+    title = doctree.Writer(page).inline(tree.next_node(nodes.title)) or docname
+    answers = any(c.metadata.get("classroom", {}).get("self_check") for c in cells
+                  ) and edition == "student"
+    nb = nbformat.v4.new_notebook()
+    nb.cells = [nbformat.v4.new_markdown_cell(first_cell(title, docname, edition, answers, w)),
+                *cells]
+    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",
+                                 "language": "python"}
+    nb.metadata["language_info"] = {"name": "python"}
+    for i, c in enumerate(nb.cells):  # stable ids: a re-export changes no unchanged cell
         c["id"] = f"cell-{i}"
-    return out
+    return nb
+
+
+def export(env: Any, builder: Any, out_dir: Path, editions: tuple[str, ...] = EDITIONS,
+           language: str = "en") -> list[Path]:
+    """Write out_dir/<edition>/NN-page.ipynb for every notebook page; return the files.
+
+    Each page's doctree is the one this build resolved for its HTML (read from the build's
+    doctrees: nothing is parsed again, nothing executed).
+    """
+    words(language)  # an unknown language fails here, before anything is written
+    files = notebook_files(env)
+    exercises = _exercise_numbers(env)
+    written = []
+    for docname, name in files.items():
+        tree = env.get_and_resolve_doctree(docname, builder)
+        # The code cells' sources as myst-nb read them (their cell_index is into this list).
+        text = Path(env.doc2path(docname)).read_text(encoding="utf-8")
+        sources = [c.source for c in read_myst_markdown_notebook(text).cells]
+        for edition in editions:
+            nb = notebook(tree, docname, edition, language, files, _numbers(env, docname),
+                          exercises, sources)
+            target = out_dir / edition / name
+            target.parent.mkdir(parents=True, exist_ok=True)
+            nbformat.write(nb, target)
+            written.append(target)
+    return written
 
 
 def execute(nb: nbformat.NotebookNode, cwd: Path, kernel: str = "python3",
@@ -365,76 +257,3 @@ def execute(nb: nbformat.NotebookNode, cwd: Path, kernel: str = "python3",
     NotebookClient(nb, km=km, timeout=timeout, kernel_name=kernel,
                    resources={"metadata": {"path": str(cwd)}}).execute(cleanup_kc=True)
     return nb
-
-
-def harvest(nb: nbformat.NotebookNode, cwd: Path, kernel: str = "python3",
-            timeout: int = 600, kernel_dirs: list[str] | None = None) -> dict[str, str]:
-    """Execute a notebook plus one cell that prints what `glue` kept: {name: text/plain}."""
-    nb.cells.append(nbformat.v4.new_code_cell(GLUE_HARVEST, id="harvest"))
-    execute(nb, cwd, kernel, timeout, kernel_dirs)
-    cell = nb.cells.pop()
-    text = "".join(o.get("text", "") for o in cell.outputs if o.output_type == "stream")
-    return dict(json.loads(text.split("GLUED", 1)[1]))
-
-
-def glue_from_build(folder: Path, page: str) -> dict[str, str]:
-    """The values myst-nb glued while building the book (``<page>.glue.json``)."""
-    path = folder / f"{page}.glue.json"
-    if not path.exists():
-        return {}
-    data = json.loads(path.read_text(encoding="utf-8"))
-    return {k: v.get("data", {}).get("text/plain", "") for k, v in data.items()}
-
-
-def export(book_dir: Path, out_dir: Path, *, run: bool = False, glue_from: Path | None = None,
-           editions: tuple[str, ...] = EDITIONS, kernel: str = "python3",
-           timeout: int = 600, pages: list[str] | None = None,
-           language: str = "en") -> list[Path]:
-    """Write out_dir/<edition>/NN-page.ipynb for every notebook page; return the files.
-
-    language: "ja" writes the Japanese edition's notebooks (book/locale's catalogs); their
-    code cells are the English ones, so they glue the same values.
-    """
-    words(language)  # an unknown language fails here, before anything is written
-    english = scan(book_dir)
-    book = localize(english, book_dir, language)
-    written = []
-    for page in pages if pages is not None else book.exported:
-        glue: dict[str, str] | None = None
-        if glue_from is not None:
-            glue = glue_from_build(glue_from, page)
-        elif run:  # in the folder the notebook will live in, as a student runs it
-            (out_dir / "instructor").mkdir(parents=True, exist_ok=True)
-            glue = harvest(export_page(book_dir, english, page, "instructor", None),
-                           out_dir / "instructor", kernel, timeout)
-        for edition in editions:
-            nb = export_page(book_dir, book, page, edition, glue, language)
-            target = out_dir / edition / book.files[page]
-            target.parent.mkdir(parents=True, exist_ok=True)
-            nbformat.write(nb, target)
-            written.append(target)
-    return written
-
-
-def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description=(__doc__ or "").splitlines()[0])
-    parser.add_argument("book", type=Path, help="folder of the MyST pages (book/)")
-    parser.add_argument("out", type=Path, help="folder for the editions (notebooks/)")
-    how = parser.add_mutually_exclusive_group()
-    how.add_argument("--execute", action="store_true",
-                     help="run each instructor notebook once to fill in the glued values")
-    how.add_argument("--glue-from", type=Path, help="a build's jupyter_execute folder")
-    parser.add_argument("--timeout", type=int, default=600, help="seconds per cell")
-    parser.add_argument("--language", default="en", choices=sorted(WORDS),
-                        help="the edition's language (ja: the Japanese notebooks)")
-    args = parser.parse_args(argv)
-    for path in export(args.book, args.out, run=args.execute, glue_from=args.glue_from,
-                       timeout=args.timeout, language=args.language):
-        print(f"wrote {path}")
-    for path in bundle.bundle_editions(args.out, EDITIONS, language=args.language):
-        print(f"wrote {path}")
-    return 0
-
-
-if __name__ == "__main__":
-    sys.exit(main())
