@@ -2,28 +2,36 @@
 # so on a fresh machine `make book` and `make test` are the only set-up commands.
 #
 #   make book         the site in book/_build/html: the book, its Japanese edition in ja/ and
-#                     its reference in reference/, one self-contained folder (myst-nb cache:
-#                     unchanged cells are not re-run; the editions share it)
-#   make book-ja      the Japanese edition alone, book/_build/html/ja (after `make book`)
+#                     its reference in reference/ (myst-nb cache: unchanged cells are not
+#                     re-run; the editions share it)
+#   make book-ja      the Japanese edition alone, book/_build/html/ja (after the English one)
+#   make site         the one folder to publish, book/_build/html: `make book`, the student
+#                     edition in student/, the four PDFs in pdf/ (the student site's two in
+#                     student/pdf/ as well), the notebook bundles in classroom/; its home
+#                     page links every part (book/_ext/site_links.py)
 #   make i18n-update  the catalogs book/locale/ja/LC_MESSAGES/*.po merged with the current
-#                     English pages (msgmerge --previous: a translator sees what changed)
+#                     English pages (a translator sees what changed)
 #   make i18n-status  fails unless every current message is translated, none fuzzy, and each
 #                     translation keeps its roles, references, glue keys and formulas
-#   make book-strict  the same from clean, every notebook re-executed (what CI checks)
+#   make book-strict  the same from clean, every notebook re-executed
 #   make docs         API/reference site in docs/_build/html
-#   make notebooks    classroom notebooks, notebooks/student and notebooks/instructor, each with
-#                     the package's wheel, requirements.txt and a README, and zipped
-#   make notebooks-ja the Japanese ones, notebooks/ja/student and notebooks/ja/instructor
-#   make book-student the student site (no solutions) in book/_build/student/html, likewise
+#   make notebooks    the classroom notebooks that `make book` wrote, in notebooks/student and
+#                     notebooks/instructor, each with the package's wheel, requirements.txt
+#                     and a README, and the zips
+#   make notebooks-ja the Japanese ones, in notebooks/ja/student and notebooks/ja/instructor
+#   make book-student the student site (no solutions) in book/_build/html/student, likewise
 #   make pdf          book/_build/pdf/book.pdf (solutions open) and book-student.pdf, and
 #                     the Japanese edition's book-ja.pdf and book-student-ja.pdf
 #   make nbgrader     the nbgrader course folder, book/_build/nbgrader: one assignment per
 #                     chapter with exercises, from the site's instructor notebooks
 #   make bench        speed and accuracy tables
-#   make test         everything: unit, property and doctests, book and docs builds,
-#                     notebook execution, headless-Chromium check (see tests/)
-#   make test-fast    the quick tier for the edit-test loop: unit, property and doctests
-#                     (no builds, no venv creation, no browser), pytest -m "not slow" -n 2
+#   make test         everything: unit, property and doctests, every command of the README
+#                     run on a fresh copy of the repository (the builds, the notebooks, the
+#                     PDFs, nbgrader, the site), the notebooks in a fresh venv, headless
+#                     Chromium (see tests/)
+#   make test-fast    the quick tier for the edit-test loop: unit, property and doctests,
+#                     the build tools' own tests (no builds, no venv creation, no browser),
+#                     pytest -m "not slow" -n 2
 #   make lint         ruff (code, tests, tools, book and docs), mypy, the import contracts
 
 PYTHON ?= python3
@@ -39,7 +47,7 @@ export PATH := $(CURDIR)/$(VENV)/bin:$(PATH)
 # Opt in to Jupyter's platformdirs layout now, which also silences its migration warning.
 export JUPYTER_PLATFORM_DIRS := 1
 
-.PHONY: venv reference book book-ja book-strict gettext i18n-update i18n-status book-student docs notebooks notebooks-ja nbgrader pdf bench test test-fast lint clean
+.PHONY: venv reference book book-en book-ja book-strict gettext i18n-update i18n-status book-student docs notebooks notebooks-ja nbgrader pdf site bench test test-fast lint clean
 
 venv: $(STAMP)
 
@@ -54,69 +62,88 @@ $(STAMP): pyproject.toml
 # first (the book links the library's names there, reading reference/objects.inv:
 # book/conf.py). Every link is relative and stays inside the folder, so it can be copied to
 # a web server or zipped as it is. The doctrees are kept out of it, in book/_build/doctrees.
-DOCTREES := book/_build/doctrees
+BUILD    := book/_build
+SITE     := $(BUILD)/html
+STUDENT  := $(SITE)/student
+DOCTREES := $(BUILD)/doctrees
 
 # The Japanese edition (book/_ext/i18n.py) is the same pages with book/locale's catalogs, in
 # the site's ja/ folder: it executes nothing (the English build filled the cache) and links
 # the same reference, one folder up.
 JA := -D language=ja -D reference_site=../reference
 
-reference: $(STAMP)
-	$(SPHINX) -d $(DOCTREES)/reference -b html docs book/_build/html/reference
+# What a build of the book reads: its pages, extensions and catalogs, the reference's pages,
+# the package and the build tools. Each build below is remade when one of them changes (and
+# then Sphinx itself rebuilds only what changed); otherwise the next command reuses it.
+INPUTS := pyproject.toml $(shell find book docs src tools -type f -not -path '*/_build/*' \
+            -not -path '*/__pycache__/*' 2>/dev/null)
 
-book: reference
-	$(SPHINX) -d $(DOCTREES)/book -b html book book/_build/html
-	$(SPHINX) -d $(DOCTREES)/book-ja $(JA) -b html book book/_build/html/ja
+$(BUILD)/.book-en: $(INPUTS) | $(STAMP)
+	$(SPHINX) -d $(DOCTREES)/reference -b html docs $(SITE)/reference
+	$(SPHINX) -d $(DOCTREES)/book -b html book $(SITE)
+	touch $@
 
-book-ja: reference
-	$(SPHINX) -d $(DOCTREES)/book-ja $(JA) -b html book book/_build/html/ja
+$(BUILD)/.book-ja: $(BUILD)/.book-en
+	$(SPHINX) -d $(DOCTREES)/book-ja $(JA) -b html book $(SITE)/ja
+	touch $@
+
+reference book-en: $(BUILD)/.book-en
+
+book-ja: $(BUILD)/.book-ja
+
+book: $(BUILD)/.book-ja
 
 book-strict: $(STAMP)
-	$(SPHINX) -E -d $(DOCTREES)/reference -b html docs book/_build/html/reference
-	$(SPHINX) -E -d $(DOCTREES)/book -D nb_execution_mode=force -b html book book/_build/html
-	$(SPHINX) -E -d $(DOCTREES)/book-ja $(JA) -b html book book/_build/html/ja
+	$(SPHINX) -E -d $(DOCTREES)/reference -b html docs $(SITE)/reference
+	$(SPHINX) -E -d $(DOCTREES)/book -D nb_execution_mode=force -b html book $(SITE)
+	$(SPHINX) -E -d $(DOCTREES)/book-ja $(JA) -b html book $(SITE)/ja
+	touch $(BUILD)/.book-en $(BUILD)/.book-ja
 
 # The messages of the current English pages, book/_build/gettext/<page>.pot (on the shared
 # execution cache: figure captions exist only in executed pages).
-gettext: reference
+gettext: $(BUILD)/.book-en
 	$(SPHINX) -d $(DOCTREES)/gettext -D reference_site=../html/reference -b gettext \
-	  book book/_build/gettext
+	  book $(BUILD)/gettext
 
 i18n-update: gettext
-	$(PY) -m tools.i18n.update book/_build/gettext book/locale ja
+	$(PY) -m tools.i18n.update $(BUILD)/gettext book/locale ja
 
 i18n-status: gettext
-	$(PY) -m tools.i18n.status book/_build/gettext book/locale ja
+	$(PY) -m tools.i18n.status $(BUILD)/gettext book/locale ja
 
 # The reference site alone.
 docs: $(STAMP)
 	$(SPHINX) -b html docs docs/_build/html
 
-# Both editions, notebooks/student and notebooks/instructor; each instructor notebook runs
-# once here (the glued numbers of its text come from that run).
-notebooks: $(STAMP)
-	rm -rf notebooks/student notebooks/instructor
-	$(PY) -m tools.classroom book notebooks --execute
+# The notebooks that the book's build wrote from its pages (book/_ext/classroom.py), with
+# their bundles: nothing is exported or run again.
+notebooks: $(BUILD)/.book-ja
+	rm -rf notebooks/student notebooks/instructor notebooks/*.zip
+	mkdir -p notebooks
+	cp -R $(SITE)/classroom/student $(SITE)/classroom/instructor $(SITE)/classroom/*.zip \
+	  notebooks/
 
-# The same in Japanese, notebooks/ja/student and notebooks/ja/instructor: each page through
-# its catalog in book/locale (the code cells are the English ones, so they glue the same
-# values), the exporter's own words and the self-checks' answers in Japanese.
-notebooks-ja: $(STAMP)
+notebooks-ja: $(BUILD)/.book-ja
 	rm -rf notebooks/ja
-	$(PY) -m tools.classroom book notebooks/ja --execute --language ja
+	mkdir -p notebooks/ja
+	cp -R $(SITE)/ja/classroom/student $(SITE)/ja/classroom/instructor \
+	  $(SITE)/ja/classroom/*.zip notebooks/ja/
 
 # The student site: the book without solutions (book/_ext/classroom.py removes them from
-# the pages, their sources and the notebooks) and its own copy of the reference.
-book-student: $(STAMP)
-	$(SPHINX) -d $(DOCTREES)/student-reference -b html docs book/_build/student/html/reference
-	$(SPHINX) -d $(DOCTREES)/student -D hide_solutions=1 -b html book book/_build/student/html
-	$(SPHINX) -d $(DOCTREES)/student-ja -D hide_solutions=1 $(JA) -b html book \
-	  book/_build/student/html/ja
+# the pages and the notebooks), with its own reference and Japanese edition, inside the
+# site's student/ folder so that the published folder holds it (and it can be served alone).
+$(BUILD)/.student: $(INPUTS) | $(STAMP)
+	$(SPHINX) -d $(DOCTREES)/student-reference -b html docs $(STUDENT)/reference
+	$(SPHINX) -d $(DOCTREES)/student -D hide_solutions=1 -b html book $(STUDENT)
+	$(SPHINX) -d $(DOCTREES)/student-ja -D hide_solutions=1 $(JA) -b html book $(STUDENT)/ja
+	touch $@
+
+book-student: $(BUILD)/.student
 
 # The course folder for nbgrader (tools/classroom/nbgrader.py): nbgrader_config.py and
-# source/<assignment>/, made from the instructor notebooks that `make book` exports.
-nbgrader: book
-	$(PY) -m tools.classroom.nbgrader book/_build/html/classroom/instructor book/_build/nbgrader
+# source/<assignment>/, made from the instructor notebooks that `make book` wrote.
+nbgrader: $(BUILD)/.book-ja
+	$(PY) -m tools.classroom.nbgrader $(SITE)/classroom/instructor $(BUILD)/nbgrader
 
 # The whole book as one PDF each for instructors (solutions open) and students (none), in
 # English and in Japanese: a single-page build of each, printed by headless Chromium once
@@ -124,9 +151,19 @@ nbgrader: book
 # runs again (the student pages are executed whole, and their solutions removed after), and
 # resolve the library's names in the book's reference; a PDF cannot link to files beside
 # it, so those names print as text.
-pdf: book
-	ELLIPTIC_PENDULUM_DOCS_HTML=$(CURDIR)/book/_build/html/reference $(PY) -m tools.pdf \
-	  book book/_build --execution-cache $(CURDIR)/book/_build/.jupyter_cache
+$(BUILD)/pdf/.made: $(BUILD)/.book-ja
+	ELLIPTIC_PENDULUM_DOCS_HTML=$(CURDIR)/$(SITE)/reference $(PY) -m tools.pdf \
+	  book $(BUILD) --execution-cache $(CURDIR)/$(BUILD)/.jupyter_cache
+	touch $@
+
+pdf: $(BUILD)/pdf/.made
+
+# One folder to publish: the site with the student edition and the PDFs inside it.
+site: $(BUILD)/.book-ja $(BUILD)/.student $(BUILD)/pdf/.made
+	mkdir -p $(SITE)/pdf $(STUDENT)/pdf
+	cp $(BUILD)/pdf/*.pdf $(SITE)/pdf/
+	cp $(BUILD)/pdf/book-student.pdf $(BUILD)/pdf/book-student-ja.pdf $(STUDENT)/pdf/
+	@echo "The site is $(SITE): copy the folder to any web server."
 
 bench: $(STAMP)
 	$(PY) benchmarks/bench_theta.py

@@ -35,6 +35,8 @@ extensions = [
     "kernels",
     # book/_ext/checks_scan.py: the checks of all pages, for the registry page.
     "checks_scan",
+    # book/_ext/site_links.py: the home page's links to the site's editions and downloads.
+    "site_links",
     "offline",
     # book/_ext/a11y.py: WCAG 2.1 AA where docutils and myst-nb write otherwise (citations,
     # the code cells' toggles); after myst_nb, whose toggle it rewrites.

@@ -1,25 +1,23 @@
-"""Shared fixtures. The book and the docs are built once per session, from clean and with
-every notebook re-executed, and the builds are reused by the build, browser and other tests.
-
-They are built as `make book` builds them: one site folder, ``<tmp>/book<N>/html``, with the
-reference site in its ``reference/`` folder (built first: the book reads its objects.inv
-there, book/conf.py) and the doctrees beside it, not in it.
+"""Shared fixtures. The build tier runs the README's commands, exactly as the README writes
+them, on a fresh copy of the repository (the files a clone has, none of the build products),
+once per session and in the README's order: `make book`, `make book-student`, `make pdf`,
+... (tests/readme.py reads them from the README). The builds the tests look at are those
+commands' outputs, in the copy's book/_build; the Makefile is the one place that says how the
+book is built.
 """
 
 from __future__ import annotations
 
 import os
 import re
-import subprocess
-import sys
-import time
 from collections.abc import Iterator
-from concurrent.futures import Future, ThreadPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
 from hypothesis import settings
+
+from tests.readme import Runs, commands, fresh_copy
 
 # The property tests give the same answer on every run: hypothesis draws its examples from a
 # fixed seed (a red run means changed behaviour, never a new draw) and keeps no database.
@@ -35,7 +33,7 @@ DOCS = ROOT / "docs"
 
 @dataclass(frozen=True)
 class Build:
-    """The outcome of one sphinx-build run."""
+    """The outcome of one sphinx-build run (one recipe line of a make command)."""
 
     source: Path
     outdir: Path
@@ -50,63 +48,6 @@ class Build:
             for line in self.output.splitlines()
             if re.search(r"\b(WARNING|ERROR|CRITICAL):", line)
         ]
-
-
-def sphinx_build(
-    source: Path, outdir: Path, *extra: str, env: dict[str, str] | None = None,
-    builder: str = "html",
-) -> Build:
-    """Run ``sphinx-build -n -W --keep-going -E`` (plus ``extra``) in a subprocess."""
-    cmd = [
-        sys.executable,
-        "-m",
-        "sphinx",
-        "-n",
-        "-W",
-        "--keep-going",
-        "-E",
-        *extra,
-        "-b",
-        builder,
-        str(source),
-        str(outdir),
-    ]
-    env = dict(os.environ, JUPYTER_PLATFORM_DIRS="1", **(env or {}))
-    # The notebook kernel must find this interpreter's packages (the editable install).
-    env["PATH"] = str(Path(sys.executable).parent) + os.pathsep + env.get("PATH", "")
-    start = time.perf_counter()
-    proc = subprocess.run(cmd, cwd=ROOT, env=env, capture_output=True, text=True, timeout=1800)
-    seconds = time.perf_counter() - start
-    _TIMINGS.append(
-        f"sphinx-build {source.name} -> {outdir.parent.name}/{outdir.name}: "
-        f"{seconds:.1f} s (exit {proc.returncode})"
-    )
-    return Build(source, outdir, proc.returncode, proc.stdout + proc.stderr, seconds)
-
-
-def reference_build(site: Path) -> Build:
-    """The reference site built from clean into ``<site>/html/reference``, as `make book`
-    and `make book-student` build it into theirs (doctrees in ``<site>/doctrees``)."""
-    return sphinx_build(
-        DOCS, site / "html" / "reference", "-d", str(site / "doctrees" / "reference")
-    )
-
-
-def book_site_build(site: Path, *extra: str) -> Build:
-    """The book built from clean into ``<site>/html``, around its reference (built first)."""
-    return sphinx_build(BOOK, site / "html", "-d", str(site / "doctrees" / "book"), *extra)
-
-
-# The Japanese edition (book/_ext/i18n.py), as `make book` builds it: the same pages with
-# book/locale's catalogs, in the site's ja/ folder, around the site's reference one folder up.
-JAPANESE = ("-D", "language=ja", "-D", "reference_site=../reference")
-
-
-def japanese_build(site: Path, name: str, *extra: str) -> Build:
-    """The Japanese edition of a site built from clean into ``<site>/html/ja``."""
-    return sphinx_build(
-        BOOK, site / "html" / "ja", "-d", str(site / "doctrees" / name), *JAPANESE, *extra
-    )
 
 
 _TIMINGS: list[str] = []
@@ -126,107 +67,78 @@ def pytest_terminal_summary(terminalreporter: pytest.TerminalReporter) -> None:
 
 
 @pytest.fixture(scope="session")
-def site_folder(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    """The folder of this session's book site: ``html`` (the site) and ``doctrees``."""
-    return tmp_path_factory.mktemp("book")
+def readme_runs(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Runs]:
+    """The README's commands, run in its order on a fresh copy, one after the other in the
+    background (tests/readme.py): each test waits only for the command it looks at."""
+    copy = fresh_copy(tmp_path_factory.mktemp("clone") / "elliptic-pendulum")
+    runs = Runs(copy, commands())
+    try:
+        yield runs
+    finally:
+        runs.close()
+        _TIMINGS.extend(runs.timings())
 
 
 @pytest.fixture(scope="session")
-def execution_cache(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    """myst-nb's execution cache of this session, empty at its start: the book build fills
-    it, so every page runs once, from clean; the student site, the PDFs' single-page builds
-    and the notebooks' glue read it, as `make book`, `make book-student` and `make pdf`
-    share book/_build/.jupyter_cache."""
-    return tmp_path_factory.mktemp("jupyter-cache")
+def site_folder(readme_runs: Runs) -> Path:
+    """The copy's build folder: ``html`` (the site) and ``doctrees``, as `make book` left it."""
+    return readme_runs.copy / "book" / "_build"
 
 
 @pytest.fixture(scope="session")
-def book_build(site_folder: Path, docs_build: Build, execution_cache: Path) -> Build:
-    """The book built from clean, every page executed (what CI checks): the session's cache
-    is empty when it starts, so "cache" mode runs every notebook, and keeps the results.
-
-    It links to the API entries of this session's docs build, in its own ``reference/``
-    folder (book/conf.py reads the objects.inv there), so the docs are built once, first.
-    """
-    return book_site_build(
-        site_folder, "-D", "nb_execution_mode=cache",
-        "-D", f"nb_execution_cache_path={execution_cache}",
-    )
+def execution_cache(site_folder: Path) -> Path:
+    """myst-nb's execution cache, empty before `make book` filled it on the fresh copy."""
+    return site_folder / ".jupyter_cache"
 
 
-@pytest.fixture(scope="session")
-def docs_build(site_folder: Path) -> Build:
-    """The reference site built from clean, into the book site's ``reference/`` folder."""
-    return reference_build(site_folder)
+def _build(runs: Runs, command: str, builder: str, source: str, outdir: str) -> Build:
+    """The sphinx-build of ``source`` into ``outdir`` (relative to the copy) that the README's
+    ``command`` ran."""
+    part = runs.result(command).part(f"-b {builder} {source} {outdir}")
+    return Build(runs.copy / source, runs.copy / outdir, part.returncode, part.output,
+                 part.seconds)
 
 
 @pytest.fixture(scope="session")
-def after_book(
-    tmp_path_factory: pytest.TempPathFactory, site_folder: Path, book_build: Build,
-    execution_cache: Path,
-) -> Iterator[dict[str, Future]]:
-    """The builds that read the cache the book build filled, started together once it is
-    done, in two chains at once (a Sphinx build uses one core; the machine has two):
-
-    * "editions": the Japanese edition, in the book site's ja/ (`make book`), then the
-      gettext builder's templates of the current pages (`make i18n-status`);
-    * "students": the student site as `make book-student` builds it, its own reference first,
-      in ``html/reference``, then the book without solutions around it (the student pages
-      execute whole from the cache; book/_ext/classroom.py removes the solutions after), then
-      its Japanese edition in ``html/ja``.
-
-    None of them executes a cell the book build ran: every edition shows the same numbers.
-    """
-    cache = ("-D", f"nb_execution_cache_path={execution_cache}")
-    student = tmp_path_factory.mktemp("student")
-    gettext = tmp_path_factory.mktemp("gettext")
-
-    def editions() -> tuple[Build, Build]:
-        japanese = japanese_build(site_folder, "book-ja", *cache)
-        pot = sphinx_build(
-            BOOK, gettext / "pot", "-d", str(gettext / "doctrees"),
-            "-D", f"reference_site={site_folder / 'html' / 'reference'}", *cache,
-            builder="gettext",
-        )
-        return japanese, pot
-
-    def students() -> tuple[Build, Build, Build]:
-        reference = reference_build(student)
-        if reference.returncode != 0:
-            return reference, reference, reference
-        book = book_site_build(student, "-D", "hide_solutions=1", *cache)
-        japanese = japanese_build(student, "student-ja", "-D", "hide_solutions=1", *cache)
-        return reference, book, japanese
-
-    with ThreadPoolExecutor(max_workers=2) as pool:
-        yield {"editions": pool.submit(editions), "students": pool.submit(students)}
+def docs_build(readme_runs: Runs) -> Build:
+    """The reference site built from clean into the site's ``reference/`` (`make book`)."""
+    return _build(readme_runs, "make book", "html", "docs", "book/_build/html/reference")
 
 
 @pytest.fixture(scope="session")
-def book_ja_build(after_book: dict[str, Future]) -> Build:
-    """The Japanese edition inside the book's site (see after_book)."""
-    return after_book["editions"].result()[0]
+def book_build(readme_runs: Runs) -> Build:
+    """The book built from clean, every page executed (`make book` on a fresh copy: its
+    execution cache was empty), linking the reference built before it."""
+    return _build(readme_runs, "make book", "html", "book", "book/_build/html")
 
 
 @pytest.fixture(scope="session")
-def gettext_build(after_book: dict[str, Future]) -> Build:
-    """The gettext builder's templates of the current pages (see after_book)."""
-    return after_book["editions"].result()[1]
+def book_ja_build(readme_runs: Runs) -> Build:
+    """The Japanese edition, in the site's ja/ (`make book`): it executes nothing."""
+    return _build(readme_runs, "make book", "html", "book", "book/_build/html/ja")
 
 
 @pytest.fixture(scope="session")
-def student_book(after_book: dict[str, Future]) -> Build:
-    """The student site (see after_book)."""
-    reference, book, _ = after_book["students"].result()
+def gettext_build(readme_runs: Runs) -> Build:
+    """The gettext builder's templates of the current pages (`make i18n-status`)."""
+    return _build(readme_runs, "make i18n-status", "gettext", "book", "book/_build/gettext")
+
+
+@pytest.fixture(scope="session")
+def student_book(readme_runs: Runs) -> Build:
+    """The student site (`make book-student`), inside the site's student/ folder."""
+    reference = _build(readme_runs, "make book-student", "html", "docs",
+                       "book/_build/html/student/reference")
     if reference.returncode != 0:
         pytest.fail("the student site's reference did not build:\n" + reference.output[-3000:])
-    return book
+    return _build(readme_runs, "make book-student", "html", "book", "book/_build/html/student")
 
 
 @pytest.fixture(scope="session")
-def student_ja_build(after_book: dict[str, Future]) -> Build:
-    """The student site's Japanese edition, in its ja/ folder (see after_book)."""
-    return after_book["students"].result()[2]
+def student_ja_build(readme_runs: Runs) -> Build:
+    """The student site's Japanese edition, in its ja/ folder (`make book-student`)."""
+    return _build(readme_runs, "make book-student", "html", "book",
+                  "book/_build/html/student/ja")
 
 
 @pytest.fixture(scope="session")

@@ -183,16 +183,26 @@ def _export(app: Sphinx, exception: BaseException | None) -> None:
     out = Path(app.outdir) / FOLDER
     editions = _editions(app)
     try:
-        export_notebooks.export(app.env, app.builder, out, editions, _language(app))
+        changed = export_notebooks.export(app.env, app.builder, out, editions, _language(app))
     except ValueError as err:  # a page the notebooks cannot hold: say which, and why
         logger.warning(f"classroom notebooks not exported: {err}", type="classroom")
         return
+    if not changed and not _bundles_stale(out, editions):
+        return  # the same notebooks and package as the bundles hold: nothing to make again
     try:
         bundle.bundle_editions(out, editions, language=_language(app))
     except RuntimeError as err:  # the wheel did not build: pip's output says why
         logger.warning(f"classroom bundles not made: {err}", type="classroom")
         return
     logger.info(f"classroom notebooks ({', '.join(editions)}) in {out}")
+
+
+def _bundles_stale(out: Path, editions: tuple[str, ...]) -> bool:
+    # A zip missing, or older than a file of the package whose wheel it holds.
+    package = Path(bundle.ROOT) / "src" / "elliptic_pendulum"
+    newest = max(p.stat().st_mtime for p in package.rglob("*.py"))
+    zips = [out / f"{ZIP_NAME}-{edition}.zip" for edition in editions]
+    return any(not z.is_file() or z.stat().st_mtime < newest for z in zips)
 
 
 def _language(app: Sphinx) -> str:

@@ -84,6 +84,17 @@ LABELS = {
         "Download every chapter's notebook with its solutions (zip)":
             "全章のノートブックを解答付きでダウンロード（zip）",
         "Download this page": "このページをダウンロード",
+        # The home page's list of the site's parts (book/_ext/site_links.py).
+        "The PDF of this edition": "この版の PDF",
+        "The notebooks of this edition (zip)": "この版のノートブック（zip）",
+        "The student edition (no solutions), to give to students":
+            "学生用の版（解答なし）：学生に配布するもの",
+        "The PDF of this edition, with the solutions": "この版の PDF（解答付き）",
+        "The PDF of the student edition": "学生用の版の PDF",
+        "The student notebooks (zip)": "学生用ノートブック（zip）",
+        "The notebooks with their solutions (zip)": "解答付きノートブック（zip）",
+        "The reference of the library": "ライブラリのリファレンス",
+        "The English edition": "英語版（English edition）",
     },
 }
 

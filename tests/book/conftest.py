@@ -6,17 +6,17 @@ test`` runs them), whatever its own marks: the folder is the tier.
 
 from __future__ import annotations
 
+import json
 import os
 import shutil
 from collections.abc import Iterator
 from concurrent.futures import Future, ThreadPoolExecutor
 from pathlib import Path
-from typing import NoReturn
+from typing import Any, NoReturn
 
 import pytest
 
 from tests.book._buildcheck import BookIndex, book_index
-from tests.conftest import BOOK, Build
 
 _HERE = Path(__file__).resolve().parent
 ROOT = _HERE.parents[1]
@@ -112,45 +112,50 @@ def background() -> Iterator[ThreadPoolExecutor]:
 
 
 @pytest.fixture(scope="session")
-def pdf_job(background: ThreadPoolExecutor, tmp_path_factory: pytest.TempPathFactory,
-            docs_build: Build, book_build: Build, execution_cache: Path) -> Future:
-    """The four PDFs of `make pdf`, on the session's execution cache (no page runs again),
-    two editions at a time: a Future of (folder, tools/pdf/build.py's report)."""
+def pdf_job(background: ThreadPoolExecutor, readme_runs: Any) -> Future:
+    """`make pdf` on the fresh copy (the README's command, in its turn): a Future of (the
+    build folder, what each print saw: tools/pdf/build.py's report.json)."""
     from tools.pdf import build as build_pdf
 
-    out = tmp_path_factory.mktemp("pdf")
-    if docs_build.returncode != 0 or book_build.returncode != 0:
-        failed: Future = Future()
-        failed.set_exception(RuntimeError("the docs or the book did not build"))
-        return failed
-    env = {"ELLIPTIC_PENDULUM_DOCS_HTML": str(docs_build.outdir)}
-    return background.submit(
-        lambda: (out, build_pdf.build(BOOK, out, execution_cache, env, workers=2)))
+    def job() -> tuple[Path, dict]:
+        run = readme_runs.result("make pdf")
+        assert run.returncode == 0, run.output[-5000:]
+        out = readme_runs.copy / "book" / "_build"
+        report = json.loads((out / "pdf" / build_pdf.REPORT).read_text(encoding="utf-8"))
+        return out, report
+
+    return background.submit(job)
 
 
 @pytest.fixture(scope="session")
-def nbgrader_job(background: ThreadPoolExecutor, built_book: Path,
+def nbgrader_job(background: ThreadPoolExecutor, readme_runs: Any,
                  tmp_path_factory: pytest.TempPathFactory) -> Future:
-    """nbgrader's own run of the course made from the book's instructor notebooks
-    (tests/book/test_nbgrader.py): a Future of what its tests look at."""
+    """nbgrader's own run of the course that `make nbgrader` wrote from the book's instructor
+    notebooks (tests/book/test_nbgrader.py): a Future of what its tests look at."""
     from tests.book.test_nbgrader import grade
 
-    return background.submit(grade, built_book, tmp_path_factory)
+    def job() -> dict:
+        run = readme_runs.result("make nbgrader")
+        assert run.returncode == 0, run.output[-5000:]
+        return grade(readme_runs.copy / "book" / "_build", tmp_path_factory)
+
+    return background.submit(job)
 
 
 @pytest.fixture(scope="session")
-def bundle_job(background: ThreadPoolExecutor, built_book: Path, student_book: Build,
+def bundle_job(background: ThreadPoolExecutor, built_book: Path, readme_runs: Any,
                tmp_path_factory: pytest.TempPathFactory) -> Future:
     """The classroom zips of both sites unpacked alone, a fresh venv that their READMEs'
     install command filled, and every notebook run in it (tests/book/test_notebooks.py):
-    a Future of (folders, venv, executed notebooks)."""
+    a Future of (folders, venv, executed notebooks). It waits for `make book-student` in
+    the background, so the survey that starts it does not."""
     from tests.book.test_notebooks import make_bundle_venv, run_all, unzip_bundles
 
-    if student_book.returncode != 0:
-        pytest.fail("the student site did not build; see test_student_book", pytrace=False)
-
     def job() -> tuple[dict[str, Path], Path, dict]:
-        folders = unzip_bundles(built_book, student_book.outdir, tmp_path_factory)
+        run = readme_runs.result("make book-student")
+        assert run.returncode == 0, "the student site did not build; see test_student_book"
+        student = readme_runs.copy / "book" / "_build" / "html" / "student"
+        folders = unzip_bundles(built_book, student, tmp_path_factory)
         venv = make_bundle_venv(folders, tmp_path_factory)
         return folders, venv, run_all(folders, venv)
 

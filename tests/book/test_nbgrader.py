@@ -83,11 +83,25 @@ def _nbgrader(venv: Path, folder: Path, *args: str) -> subprocess.CompletedProce
     return proc
 
 
-def grade(built_book: Path, tmp_path_factory: pytest.TempPathFactory) -> dict:
-    """The course written, released and autograded by nbgrader, in a venv of its own."""
-    grader_venv = make_grader_venv(built_book, tmp_path_factory)
-    folder = tmp_path_factory.mktemp("nbgrader")
-    points = course.write_course(built_book / "classroom" / "instructor", folder)
+def _points(folder: Path) -> dict[str, tuple[int, int]]:
+    """assignment -> (autograded points, points graded by hand), from nbgrader's metadata."""
+    points = {}
+    for path in sorted((folder / "source").glob("*/*.ipynb")):
+        cells = nbformat.read(path, as_version=4).cells
+        graded = [(c.cell_type, c.metadata["nbgrader"].get("points", 0)) for c in cells
+                  if c.metadata.get("nbgrader", {}).get("grade")]
+        points[path.stem] = (sum(n for kind, n in graded if kind == "code"),
+                             sum(n for kind, n in graded if kind == "markdown"))
+    return points
+
+
+def grade(build: Path, tmp_path_factory: pytest.TempPathFactory) -> dict:
+    """The course that `make nbgrader` wrote in ``build``/nbgrader, released and autograded by
+    nbgrader, in a venv of its own with the instructor bundle of ``build``/html."""
+    grader_venv = make_grader_venv(build / "html", tmp_path_factory)
+    folder = tmp_path_factory.mktemp("nbgrader") / "course"
+    shutil.copytree(build / "nbgrader", folder)
+    points = _points(folder)
     for name in points:
         _nbgrader(grader_venv, folder, "generate_assignment", name, "--force")
         for student, origin in (("solutions", "source"), ("blank", "release")):

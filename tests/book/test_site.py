@@ -157,9 +157,11 @@ def _site(build: Build) -> Path:
 
 @pytest.fixture(scope="module")
 def copies(book_build: Build, student_book: Build, book_ja_build: Build,
-           student_ja_build: Build, tmp_path_factory) -> dict[str, tuple]:
-    """site -> (the copy, the folder it was built in): each site copied alone, with its
-    Japanese edition in ja/ (the language switch links the two)."""
+           student_ja_build: Build, readme_runs, tmp_path_factory) -> dict[str, tuple]:
+    """site -> (the copy, the folder it was built in): the published folder that `make site`
+    put together, and the student site inside it, each copied alone (the student site can be
+    served alone), with its Japanese edition in ja/ (the language switch links the two)."""
+    assert readme_runs.result("make site").returncode == 0, "make site failed: test_readme"
     found = {}
     for name, build in (("book", book_build), ("student", student_book)):
         built = _site(build)

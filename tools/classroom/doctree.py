@@ -123,6 +123,8 @@ class Writer:
         name = type(node).__name__
         if isinstance(node, (nodes.comment, nodes.substitution_definition, nodes.raw)):
             return
+        if isinstance(node, nodes.Element) and "site-links" in node.get("classes", []):
+            return  # the published site's downloads: a notebook is one of them
         if isinstance(node, nodes.Text):
             self.blocks.append(_escape(node.astext()))
             return

@@ -214,7 +214,7 @@ def notebook(tree: Any, docname: str, edition: str, language: str, files: dict[s
 
 def export(env: Any, builder: Any, out_dir: Path, editions: tuple[str, ...] = EDITIONS,
            language: str = "en") -> list[Path]:
-    """Write out_dir/<edition>/NN-page.ipynb for every notebook page; return the files.
+    """Write out_dir/<edition>/NN-page.ipynb for every notebook page; return those changed.
 
     Each page's doctree is the one this build resolved for its HTML (read from the build's
     doctrees: nothing is parsed again, nothing executed).
@@ -233,8 +233,11 @@ def export(env: Any, builder: Any, out_dir: Path, editions: tuple[str, ...] = ED
                           exercises, sources)
             target = out_dir / edition / name
             target.parent.mkdir(parents=True, exist_ok=True)
-            nbformat.write(nb, target)
-            written.append(target)
+            text = nbformat.writes(nb) + "\n"
+            # An unchanged notebook is left as it is (its bundle need not be made again).
+            if not target.is_file() or target.read_text(encoding="utf-8") != text:
+                target.write_text(text, encoding="utf-8")
+                written.append(target)
     return written
 
 

@@ -19,7 +19,9 @@ from __future__ import annotations
 
 import argparse
 import datetime
+import hashlib
 import importlib.metadata
+import json
 import os
 import subprocess
 import sys
@@ -30,6 +32,8 @@ from pathlib import Path
 from .printer import print_pdf
 
 STUDENT = ["-D", "hide_solutions=1"]
+# What each print saw (formulas typeset, solutions opened, images...), beside the PDFs.
+REPORT = "report.json"
 JAPANESE = ["-D", "language=ja"]
 # name: (build subfolder, sphinx-build options, solutions open, language).
 EDITIONS = {
@@ -97,12 +101,24 @@ def build(book: Path, build_dir: Path, cache: Path | None = None,
         )
         built = time.perf_counter() - start
         start = time.perf_counter()
-        seen = print_pdf(out / "index.html", build_dir / "pdf" / f"{name}.pdf", solutions,
-                         title_page=title_page(name))
-        return {"build s": built, "print s": time.perf_counter() - start, **seen}
+        pdf = build_dir / "pdf" / f"{name}.pdf"
+        # A page printed before, unchanged since (same HTML, same title page), is not
+        # printed again: the PDF and what its print saw are kept.
+        key = hashlib.sha256((out / "index.html").read_bytes()
+                             + repr(title_page(name)).encode()).hexdigest()
+        seen = previous.get(name, {})
+        if not (pdf.is_file() and seen.get("key") == key):
+            seen = {**print_pdf(out / "index.html", pdf, solutions,
+                                title_page=title_page(name)), "key": key}
+        return {**seen, "build s": built, "print s": time.perf_counter() - start}
 
+    report_file = build_dir / "pdf" / REPORT
+    previous = json.loads(report_file.read_text()) if report_file.is_file() else {}
     with ThreadPoolExecutor(max_workers=workers) as pool:
-        return dict(zip(names, pool.map(make, names), strict=True))
+        report = dict(zip(names, pool.map(make, names), strict=True))
+    report_file.parent.mkdir(parents=True, exist_ok=True)
+    report_file.write_text(json.dumps({**previous, **report}, indent=1), encoding="utf-8")
+    return report
 
 
 def main(argv: list[str] | None = None) -> int:
