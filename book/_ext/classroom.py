@@ -217,9 +217,9 @@ def _builder_inited(app: Sphinx) -> None:
     # extension registered visitors under the builder's own name. Some register for
     # "singlehtml", and then myst-nb's HideCodeCellNode (html only) has none there: copy them.
     handlers = app.registry.translation_handlers
-    if app.builder.name == "singlehtml":  # the page that tools/print_pdf.py prints
+    if app.builder.name == "singlehtml":  # the page that tools/pdf prints
         # Equation numbers (\tag) are MathJax text: in the page's font they are real text
-        # in the PDF (searchable, and what tests/test_pdf.py reads), not glyph drawings.
+        # in the PDF (searchable, and what tests/book/test_pdf.py reads), not glyph drawings.
         config = dict(app.config.mathjax3_config or {})
         config["chtml"] = {**config.get("chtml", {}), "mtextInheritFont": True}
         app.config.mathjax3_config = config

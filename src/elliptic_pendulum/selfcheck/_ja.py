@@ -8,7 +8,7 @@ written there, to its Japanese; the terms are the book's (book/glossary.md and t
 catalogs in book/locale/ja/LC_MESSAGES). A formula, a name in backticks or a role stays as
 it is, so that the notebook typesets and links it as in English. Hints addressed to the
 student end in 「…こと。」 or ask 「…か。」; the rest is in the book's である調.
-tests/classroom/test_selfcheck_ja.py keeps MESSAGES in step with the chapter modules.
+tests/selfcheck/test_selfcheck_ja.py keeps MESSAGES in step with the chapter modules.
 """
 
 from __future__ import annotations
