@@ -51,11 +51,12 @@ export JUPYTER_PLATFORM_DIRS := 1
 
 venv: $(STAMP)
 
-# Reinstall only when the dependencies change; `-e` makes edits in src/ visible at once.
-$(STAMP): pyproject.toml
+# Reinstall only when the dependencies change; `-e` makes edits in src/ visible at once. The
+# versions are those of constraints.txt, the ones the book was built and checked with.
+$(STAMP): pyproject.toml constraints.txt
 	test -x $(PY) || $(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install --quiet --upgrade pip
-	$(PY) -m pip install --quiet -e ".[test,book,dev]"
+	$(PY) -m pip install --quiet -c constraints.txt -e ".[test,book,dev]"
 	touch $@
 
 # A site is one folder: the book, and the reference site built into its reference/ folder
