@@ -118,7 +118,7 @@ def label(language: str | None, text: str) -> str:
     return LABELS.get(language or "en", {}).get(text, text)
 
 
-class _KeepRenderer(dict):  # type: ignore[type-arg]
+class _KeepRenderer(dict):
     """A document's attributes that remember the notebook renderer.
 
     myst-nb removes it at the end of a page's parse; the page's translated messages need it.

@@ -83,14 +83,18 @@ def hidden_tests(label: str) -> str:
     return "\n".join(lines)
 
 
+SOLUTION_HEADING = re.compile(r'^\s*(<a id="[^"]*"></a>\s*)*#+ [^\n]*\n*')
+
+
 def _exercise_cells(label: str, solution: list[nbformat.NotebookNode]) -> tuple[list, int, int]:
     """The cells that replace one worked solution; and its autograded and manual points."""
     exercise = selfcheck.EXERCISES[label]
     code = [c for c in solution if c.cell_type == "code"]
     text = [c.source for c in solution if c.cell_type == "markdown"]
-    # The first Markdown cell opens with the "#### Solution to Exercise N" heading.
-    if text and text[0].lstrip().startswith("####"):
-        text[0] = text[0].lstrip().split("\n", 1)[1] if "\n" in text[0].lstrip() else ""
+    # The first Markdown cell opens with the solution's anchor and its "#### Solution to
+    # Exercise N" heading: the model answer is what follows.
+    if text:
+        text[0] = SOLUTION_HEADING.sub("", text[0], count=1)
     cells, auto, manual = [], 0, 0
     if exercise.values:
         names = ", ".join(f"`{v.name}` ({v.what})" for v in exercise.values)
@@ -127,7 +131,8 @@ def _names(source: str) -> tuple[set[str], set[str]]:
         tree = ast.parse(source)
     except SyntaxError:
         return set(), set()
-    stored, loaded = set(), set()
+    stored: set[str] = set()
+    loaded: set[str] = set()
     for node in ast.walk(tree):
         if isinstance(node, ast.Name):
             (stored if isinstance(node.ctx, (ast.Store, ast.Del)) else loaded).add(node.id)
@@ -167,8 +172,9 @@ def exercises_only(cells: list[nbformat.NotebookNode]) -> list[nbformat.Notebook
         if stores & wanted:
             needed.insert(0, k)
             wanted = (wanted - stores) | (loads - defined)
-    first = nbformat.v4.new_markdown_cell(
-        cells[start].source[heading.search(cells[start].source).start():])
+    found = heading.search(cells[start].source)
+    assert found is not None  # the cell was chosen for its heading
+    first = nbformat.v4.new_markdown_cell(cells[start].source[found.start():])
     first.metadata = cells[start].metadata
     kept = [cells[0], cells[setup]]
     if needed:

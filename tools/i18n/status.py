@@ -89,7 +89,7 @@ def check_entry(msgid: str, msgstr: str) -> list[str]:
     return faults
 
 
-def _read(path: Path):  # type: ignore[no-untyped-def]
+def _read(path: Path):
     with path.open("rb") as f:
         return read_po(f, abort_invalid=True)
 

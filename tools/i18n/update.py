@@ -28,7 +28,8 @@ def fill_neutral(catalog: Catalog) -> int:
     """Give each message without prose itself as translation; how many were filled."""
     filled = 0
     for message in catalog:
-        if message.id and not message.string and not NOT_PROSE.sub("", message.id):
+        if (isinstance(message.id, str) and message.id and not message.string
+                and not NOT_PROSE.sub("", message.id)):
             message.string = message.id
             filled += 1
     return filled

@@ -391,8 +391,9 @@ def destination_pages(data: bytes, names: list[str]) -> dict[str, int]:
 
     reader = PdfReader(io.BytesIO(data))
     wanted = set(names)
-    return {name[1:]: reader.get_destination_page_number(dest) + 1
-            for name, dest in reader.named_destinations.items() if name[1:] in wanted}
+    found = {name[1:]: reader.get_destination_page_number(dest)
+             for name, dest in reader.named_destinations.items() if name[1:] in wanted}
+    return {name: page + 1 for name, page in found.items() if page is not None}
 
 
 def main(argv: list[str] | None = None) -> int:
