@@ -96,14 +96,14 @@ def run(command: str, cwd: Path) -> Run:
     env = {k: v for k, v in os.environ.items()
            if k not in ("MAKEFLAGS", "MFLAGS", "MAKELEVEL")}
     start = time.perf_counter()
-    proc = subprocess.Popen(command.split(), cwd=cwd, env=env, stdout=subprocess.PIPE,
-                            stderr=subprocess.STDOUT, text=True, encoding="utf-8",
-                            errors="replace")
     lines: list[tuple[float, str]] = []
-    assert proc.stdout is not None
-    for line in proc.stdout:
-        lines.append((time.perf_counter(), line))
-    returncode = proc.wait()
+    with subprocess.Popen(command.split(), cwd=cwd, env=env, stdout=subprocess.PIPE,
+                          stderr=subprocess.STDOUT, text=True, encoding="utf-8",
+                          errors="replace") as proc:
+        assert proc.stdout is not None
+        for line in proc.stdout:
+            lines.append((time.perf_counter(), line))
+        returncode = proc.wait()
     end = time.perf_counter()
     parts: list[Part] = []
     starts = [i for i, (_, line) in enumerate(lines) if RECIPE.match(line)]

@@ -13,6 +13,7 @@ either); pip's download cache makes the install quick on a second run.
 from __future__ import annotations
 
 import json
+import os
 import re
 import shlex
 import subprocess
@@ -131,6 +132,23 @@ def test_the_bundle_kernel_is_the_bundle_venv(bundle_venv: Path, tmp_path: Path)
     # requirements.txt brought the sliders and a front end; the book's tools stayed out.
     assert seen["present"] == ["ipywidgets", "jupyterlab", "sympy", "mpmath"]
     assert seen["missing"] == ["sphinx", "myst_nb", "jupytext", "docutils"]
+
+
+def test_the_installed_wheels_doctests_pass_bare(bundle_venv: Path, tmp_path: Path) -> None:
+    # "Doctest runs" as a user makes them: the wheel a bundle installs, pytest and nothing
+    # else of the project (none of its doctest flags), from an empty folder.
+    python = str(bundle_venv / "bin" / "python")
+    pip = subprocess.run([python, "-m", "pip", "install", "--quiet", "pytest"],
+                         capture_output=True, text=True, timeout=900)
+    assert pip.returncode == 0, pip.stdout[-2000:] + pip.stderr[-2000:]
+    proc = subprocess.run(
+        [python, "-m", "pytest", "-q", "-p", "no:cacheprovider", "-c", os.devnull,
+         "--rootdir", str(tmp_path), "--doctest-modules", "--pyargs", "elliptic_pendulum"],
+        cwd=tmp_path, capture_output=True, text=True, timeout=900)
+    assert proc.returncode == 0, proc.stdout[-5000:]
+    passed = int(re.search(r"(\d+) passed", proc.stdout)[1])
+    assert passed >= 75, proc.stdout[-500:]  # every module's examples, not an empty run
+    TIMES.append(f"the wheel's doctests, bare: {passed} passed")
 
 
 def _markdown(nb: nbformat.NotebookNode) -> str:
