@@ -148,13 +148,12 @@ nbgrader: $(BUILD)/.book-ja
 
 # The whole book as one PDF each for instructors (solutions open) and students (none), in
 # English and in Japanese: a single-page build of each, printed by headless Chromium once
-# MathJax is done (tools/pdf). The builds reuse the HTML book's execution cache, so no cell
-# runs again (the student pages are executed whole, and their solutions removed after), and
-# resolve the library's names in the book's reference; a PDF cannot link to files beside
-# it, so those names print as text.
-$(BUILD)/pdf/.made: $(BUILD)/.book-ja
-	ELLIPTIC_PENDULUM_DOCS_HTML=$(CURDIR)/$(SITE)/reference $(PY) -m tools.pdf \
-	  book $(BUILD) --execution-cache $(CURDIR)/$(BUILD)/.jupyter_cache
+# MathJax is done (tools/pdf). Each single page shares the doctrees of its HTML edition (the
+# book's and the student site's), so no page is read or executed again, and resolves the
+# library's names in that edition's reference; a PDF cannot link to files beside it, so
+# those names print as text.
+$(BUILD)/pdf/.made: $(BUILD)/.book-ja $(BUILD)/.student
+	$(PY) -m tools.pdf book $(BUILD)
 	touch $@
 
 pdf: $(BUILD)/pdf/.made

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import os
 import sys
 from pathlib import Path
 
@@ -86,9 +85,9 @@ math_eqref_format = "({number})"
 # build, read from its objects.inv on disk, relative to this build. The docs are built into
 # the book's own output folder, <outdir>/reference (`make book` and the tests do), so the
 # book and its reference are one folder that can be copied or served as it is. A relative
-# path is taken from the output folder; ELLIPTIC_PENDULUM_DOCS_HTML may name another build
-# (the PDF's single-page builds, `make pdf`).
-reference_site = os.environ.get("ELLIPTIC_PENDULUM_DOCS_HTML") or "reference"
+# path is taken from the output folder; ELLIPTIC_PENDULUM_DOCS_HTML may name the build whose
+# inventory to read (the PDF's single-page builds, `make pdf`).
+reference_site = "reference"
 intersphinx_mapping: dict[str, tuple[str, str]] = {}
 
 # --- Copy buttons -----------------------------------------------------------------------

@@ -46,7 +46,13 @@ def _configure(app: Sphinx, config: Config) -> None:
     config.html_static_path = [*config.html_static_path, _mathjax_files()]
     config.mathjax_path = "mathjax/tex-chtml.js"
     if config.reference_site:
-        site = (Path(app.outdir) / config.reference_site).resolve()
+        # The inventory is read from the reference site beside this build, or from the one
+        # ELLIPTIC_PENDULUM_DOCS_HTML names (the PDFs' single pages, built elsewhere, read
+        # the site's). The links stay relative to reference_site either way, so the mapping
+        # (a setting Sphinx keeps with its doctrees) is the same for the HTML page and its
+        # single-page print, which then share their doctrees: nothing is read twice.
+        named = os.environ.get("ELLIPTIC_PENDULUM_DOCS_HTML")
+        site = (Path(named) if named else Path(app.outdir) / config.reference_site).resolve()
         if not (site / "objects.inv").is_file():
             raise RuntimeError(
                 f"The reference site's inventory {site / 'objects.inv'} is missing: the book "
@@ -54,8 +60,7 @@ def _configure(app: Sphinx, config: Config) -> None:
                 f"does: sphinx-build docs {Path(app.outdir) / 'reference'}), or set "
                 "ELLIPTIC_PENDULUM_DOCS_HTML to a docs build."
             )
-        # The relative URI needs the output folder, which is known only once Sphinx runs.
-        relative = os.path.relpath(site, app.outdir).replace(os.sep, "/")
+        relative = config.reference_site.replace(os.sep, "/").rstrip("/")
         config.intersphinx_mapping["api"] = (relative + "/", str(site / "objects.inv"))
         config.intersphinx_disabled_reftypes = ["std:*"]
 

@@ -34,13 +34,17 @@ from .printer import print_pdf
 STUDENT = ["-D", "hide_solutions=1"]
 # What each print saw (formulas typeset, solutions opened, images...), beside the PDFs.
 REPORT = "report.json"
-JAPANESE = ["-D", "language=ja"]
-# name: (build subfolder, sphinx-build options, solutions open, language).
+JAPANESE = ["-D", "language=ja", "-D", "reference_site=../reference"]
+# name: (build subfolder, sphinx-build options, solutions open, language, the HTML edition
+# whose doctrees it shares: <build>/doctrees/<name>, and whose reference it reads, in
+# <build>/html/<site>/reference). The options are the HTML edition's (the Makefile's), so
+# Sphinx finds the pages read and resolved already and only writes the single page.
 EDITIONS = {
-    "book": (".", [], True, "en"),
-    "book-student": ("student", STUDENT, False, "en"),
-    "book-ja": ("ja", JAPANESE, True, "ja"),
-    "book-student-ja": ("student-ja", [*STUDENT, *JAPANESE], False, "ja"),
+    "book": (".", [], True, "en", "book", "."),
+    "book-student": ("student", STUDENT, False, "en", "student", "student"),
+    "book-ja": ("ja", JAPANESE, True, "ja", "book-ja", "."),
+    "book-student-ja": ("student-ja", [*STUDENT, *JAPANESE], False, "ja", "student-ja",
+                        "student"),
 }
 # The title page says which edition, which version of the library the book was built with
 # (its numbers come from that run), when, and the licences (book/about.md,
@@ -90,14 +94,16 @@ def build(book: Path, build_dir: Path, cache: Path | None = None,
     env["PATH"] = str(Path(sys.executable).parent) + os.pathsep + env.get("PATH", "")
 
     def make(name: str) -> dict:
-        sub, extra, solutions, _ = EDITIONS[name]
+        sub, extra, solutions, _, doctrees, site = EDITIONS[name]
         out = build_dir / sub / "singlehtml"
         options = ["-D", f"nb_execution_cache_path={cache}"] if cache else []
+        reference = (build_dir / "html" / site / "reference").resolve()
         start = time.perf_counter()
         subprocess.run(
             [sys.executable, "-m", "sphinx", "-n", "-W", "--keep-going", "-q", *options,
-             *extra, "-b", "singlehtml", str(book), str(out)],
-            check=True, env=env,
+             "-d", str(build_dir / "doctrees" / doctrees), *extra, "-b", "singlehtml",
+             str(book), str(out)],
+            check=True, env={**env, "ELLIPTIC_PENDULUM_DOCS_HTML": str(reference)},
         )
         built = time.perf_counter() - start
         start = time.perf_counter()
