@@ -55,10 +55,11 @@ def fresh_copy(dest: Path, root: Path = ROOT) -> Path:
     for link in (".venv", "node_modules"):
         if (root / link).exists():
             (dest / link).symlink_to(root / link, target_is_directory=True)
-    stamp, pyproject = root / ".venv" / ".installed", dest / "pyproject.toml"
-    if not stamp.exists() or stamp.stat().st_mtime < pyproject.stat().st_mtime:
-        raise RuntimeError("the virtual environment is older than pyproject.toml: run "
-                           "`make venv` (or `make test`, which does) first")
+    stamp = root / ".venv" / ".installed"
+    inputs = [dest / "pyproject.toml", dest / "constraints.txt"]  # the Makefile's for it
+    if not stamp.exists() or any(stamp.stat().st_mtime < p.stat().st_mtime for p in inputs):
+        raise RuntimeError("the virtual environment is older than pyproject.toml or "
+                           "constraints.txt: run `make venv` (or `make test`, which does)")
     return dest
 
 
