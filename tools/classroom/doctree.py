@@ -119,7 +119,7 @@ class Writer:
                              f"{[type(c).__name__ for c in children]}")
         return "\n\n".join(c.source for c in sub.cells)
 
-    def block(self, node: nodes.Node) -> None:  # noqa: PLR0912 - one branch per node kind
+    def block(self, node: nodes.Node) -> None:
         name = type(node).__name__
         if isinstance(node, (nodes.comment, nodes.substitution_definition, nodes.raw)):
             return
@@ -335,7 +335,7 @@ class Writer:
             return ""
         return "".join(self._inline(c) for c in node.children).strip()
 
-    def _inline(self, node: nodes.Node) -> str:  # noqa: PLR0911 - one return per node kind
+    def _inline(self, node: nodes.Node) -> str:
         if isinstance(node, nodes.Text):
             return _escape(node.astext()).replace("\n", " ")
         assert isinstance(node, nodes.Element)
@@ -352,9 +352,7 @@ class Writer:
         if isinstance(node, (nodes.image, nodes.raw, nodes.footnote_reference, nodes.target,
                              nodes.substitution_reference)):
             return ""
-        if isinstance(node, (nodes.paragraph, nodes.title, nodes.caption)):
-            return self._children(node)
-        return self._children(node)
+        return self._children(node)  # inline containers: glued values, roles' spans
 
     def _children(self, node: nodes.Element) -> str:
         return "".join(self._inline(c) for c in node.children)
