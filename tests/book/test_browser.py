@@ -358,8 +358,9 @@ def pages(html_dir: Path, *besides: str) -> list[Path]:
 # The book site holds the reference in reference/ (`make book`); it is looked at as "docs".
 # The student site is the book's pages without the solutions, from the same sources,
 # templates and style sheets: not looked at a second time (that would double the survey).
-# The Japanese edition, in the book's ja/ folder, is looked at as "ja".
-BESIDES = {"book": ("reference", "ja"), "ja": (), "docs": ()}
+# The Japanese edition, in the book's ja/ folder, is looked at as "ja". The student site
+# inside the published folder (student/, `make book-student`) is left out with it.
+BESIDES = {"book": ("reference", "ja", "student"), "ja": (), "docs": ()}
 SITES = ("book", "ja", "docs")
 
 
