@@ -76,8 +76,10 @@ JA := -D language=ja -D reference_site=../reference
 # What a build of the book reads: its pages, extensions and catalogs, the reference's pages,
 # the package and the build tools. Each build below is remade when one of them changes (and
 # then Sphinx itself rebuilds only what changed); otherwise the next command reuses it.
+# (Not what the builds write beside them: the compiled catalogs, *.mo, caches, egg-info.)
 INPUTS := pyproject.toml $(shell find book docs src tools -type f -not -path '*/_build/*' \
-            -not -path '*/__pycache__/*' 2>/dev/null)
+            -not -path '*/__pycache__/*' -not -path '*.egg-info/*' -not -name '*.mo' \
+            -not -path '*/.ipynb_checkpoints/*' 2>/dev/null)
 
 $(BUILD)/.book-en: $(INPUTS) | $(STAMP)
 	$(SPHINX) -d $(DOCTREES)/reference -b html docs $(SITE)/reference
