@@ -34,6 +34,7 @@ import numpy.typing as npt
 
 from .._validation import FloatOrArray, real_array, scalar_or_array
 from ..elliptic import complete_integral
+from ._scaled import MAX_TERMS, scaled_coefficients
 
 __all__ = ["fourier_coefficients", "nome", "period_series", "period_series_coefficients"]
 
@@ -157,6 +158,11 @@ def _coefficients(n: int) -> tuple[Fraction, ...]:
     return tuple(Fraction(e, 64**j * math.factorial(2 * j)) for j, e in enumerate(_scaled(n)))
 
 
+# period_series sums a_0 .. a_{_HEAD - 1} as doubles (exactly rounded, so that two terms are
+# 1 + theta0^2 / 16 to the last bit), and the scaled coefficients of ._scaled after them.
+_HEAD = 200
+
+
 @functools.lru_cache(maxsize=16)
 def _float_coefficients(n: int) -> tuple[float, ...]:
     """Return a_0, ..., a_{n-1} rounded to doubles, for summing the series."""
@@ -174,7 +180,8 @@ def period_series(theta0: npt.ArrayLike, terms: int) -> FloatOrArray:
     theta0 : float or array_like
         Amplitude in radians, :math:`|\theta_0| < \pi` (the radius of convergence).
     terms : int
-        N, the number of terms (``terms=1`` gives 1, the small-angle period (8)).
+        N, the number of terms (``terms=1`` gives 1, the small-angle period (8)), at most
+        1,000,000: enough for a sum within rounding of R up to :math:`\pi - 5\cdot10^{-5}`.
 
     Returns
     -------
@@ -184,7 +191,15 @@ def period_series(theta0: npt.ArrayLike, terms: int) -> FloatOrArray:
     Raises
     ------
     ValueError
-        If an amplitude is not finite or :math:`|\theta_0| \ge \pi`: there the series diverges.
+        If an amplitude is not finite or :math:`|\theta_0| \ge \pi`: there the series diverges;
+        or if ``terms`` exceeds 1,000,000.
+
+    Notes
+    -----
+    Beyond 200 terms the :math:`a_j` (which shrink like :math:`\pi^{-2j}` and leave the doubles
+    near j = 330) are summed scaled, as :math:`a_j c^{2j}\,(\theta_0/c)^{2j}` with c the double
+    nearest pi; the scaled coefficients come from a recurrence of fixed cost per term (the
+    module ``_scaled``), computed once and kept.
 
     Examples
     --------
@@ -200,13 +215,27 @@ def period_series(theta0: npt.ArrayLike, terms: int) -> FloatOrArray:
     """
     theta0 = real_array(theta0, "theta0")
     terms = _count(terms, "terms")
+    if terms > MAX_TERMS:
+        raise ValueError(f"terms must be at most {MAX_TERMS:,} (the series is summed term by "
+                         f"term); got {terms}")
     if np.any(np.abs(theta0) >= math.pi):
         raise ValueError("theta0 must satisfy |theta0| < pi (the series of R converges only "
                          f"there); got {theta0.tolist()!r}")
-    x = theta0 * theta0
-    total = np.zeros_like(x)
-    for coefficient in reversed(_float_coefficients(terms)):
-        total = total * x + coefficient
+    # Tiny amplitudes underflow in the powers; 0 is those terms' value to rounding.
+    with np.errstate(under="ignore"):
+        x = theta0 * theta0
+        total = np.zeros_like(x)
+        for coefficient in reversed(_float_coefficients(min(terms, _HEAD))):
+            total = total * x + coefficient
+        if terms > _HEAD:
+            # Beyond _HEAD the a_j approach the bottom of the doubles (below 1e-308 from
+            # j = 330 on, and they were summed as 0): the rest is sum_j b_j y^j with
+            # b_j = a_j c^2j and y = (theta0 / c)^2 <= 1, c = math.pi, each factor a double.
+            y = np.square(theta0 / math.pi)
+            tail = np.zeros_like(y)
+            for coefficient in scaled_coefficients(terms)[:_HEAD - 1:-1]:
+                tail = tail * y + coefficient
+            total = total + tail * y**_HEAD
     return scalar_or_array(total, theta0)
 
 
