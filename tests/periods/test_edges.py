@@ -243,3 +243,20 @@ def test_period_series_refuses_more_terms_than_it_sums():
 def test_period_series_of_a_tiny_amplitude_is_quiet():
     # theta0^2 underflows; the sum is 1 to rounding (a_1 theta0^2 < 1e-400).
     assert _silently(ep.period_series, 1e-200, 400) == 1.0
+
+
+@pytest.mark.parametrize("value", [1 + 2.0**-52, 1 + 1e-12, 1 + 1e-8, 1.001, 1.3, 1.9999])
+def test_crossing_angle_near_one_keeps_its_relative_accuracy(value):
+    # R - v cancelled near v = 1, and theta0 = pi - x kept only the absolute accuracy of x:
+    # crossing_angle(1 + 1e-12) was 4.0001225e-06 for 4.0001778e-06. Reference: the root of
+    # (2/pi) K(sin^2(theta/2)) = v by mpmath at 60 digits, bracketed by R - 1 >= theta^2/16.
+    import mpmath
+
+    ctx = mpmath.MPContext()
+    ctx.dps = 60
+    v = ctx.mpf(value)
+    high = min(4 * ctx.sqrt(v - 1) * (1 + ctx.mpf("1e-6")), ctx.mpf("2.8"))
+    expected = ctx.findroot(lambda t: 2 / ctx.pi * ctx.ellipk(ctx.sin(t / 2) ** 2) - v,
+                            (high / 2, high), solver="anderson")
+    got = _silently(ep.crossing_angle, value)
+    assert abs(got - expected) <= 4 * 2.0**-52 * expected
