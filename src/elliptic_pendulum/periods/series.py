@@ -33,7 +33,7 @@ import numpy as np
 import numpy.typing as npt
 
 from .._validation import FloatOrArray, real_array, scalar_or_array
-from ..elliptic import complete_integral
+from ._nome import nome_from_pair, root_nome_from_pair
 from ._scaled import MAX_TERMS, scaled_coefficients
 
 __all__ = ["fourier_coefficients", "nome", "period_series", "period_series_coefficients"]
@@ -239,8 +239,8 @@ def period_series(theta0: npt.ArrayLike, terms: int) -> FloatOrArray:
     return scalar_or_array(total, theta0)
 
 
-def _root_nome(k: Any, kc: Any) -> tuple[np.ndarray, np.ndarray]:
-    r"""(sqrt(q), k) with the modulus pair checked: 0 where k = 0, 1 where k = 1."""
+def _checked_pair(k: Any, kc: Any) -> tuple[np.ndarray, np.ndarray]:
+    """(k, kc) with the modulus pair checked, the one not given formed from the other."""
     if kc is None:
         k = real_array(k, "k")
         if np.any((k < 0) | (k > 1)):
@@ -252,36 +252,7 @@ def _root_nome(k: Any, kc: Any) -> tuple[np.ndarray, np.ndarray]:
         if np.any((kc < 0) | (kc > 1)):
             raise ValueError("kc (the complementary modulus sqrt(1 - k**2)) must lie in [0, 1]")
         k = np.sqrt((1.0 - kc) * (1.0 + kc))
-    return _root_nome_pair(k, kc), k
-
-
-def _root_nome_pair(k: np.ndarray, kc: np.ndarray) -> np.ndarray:
-    r"""sqrt(q) from a modulus pair each known to full relative precision (already checked).
-
-    Neither is recomputed from the other: kc = cos(theta0/2) rounds to 1 for small swings and
-    k = sqrt(1 - kc^2) would then be 0 (the nome with it), so the caller passes both.
-    """
-    k, kc = np.broadcast_arrays(np.asarray(k, dtype=float), np.asarray(kc, dtype=float))
-    # pi K'/K with K = K1(k), K' = K1(kc), each seeded with the other one's complement (two
-    # AGMs): neither is formed as 1 - something, so q = exp(-pi K'/K) is accurate for small kc.
-    big = np.asarray(complete_integral(k, kc=kc), dtype=float)
-    zero = k == 0.0
-    prime = np.asarray(complete_integral(kc, kc=np.where(zero, 1.0, k)), dtype=float)
-    exponent = np.full(k.shape, np.inf)
-    np.divide(math.pi * prime, big, out=exponent, where=~zero & np.isfinite(big))
-    exponent[~np.isfinite(big)] = 0.0  # k = 1: K = inf, q = 1
-    root = np.array(np.exp(-0.5 * exponent), dtype=float)
-    # For small k, pi K'/K ~ log(16/k^2) is large and its rounding would cost q a relative error
-    # of up to 700 eps. There, q = e + 2e^5 + 15e^9 + 150e^13 + ... (A&S 17.3.21) with
-    # e = (1 - sqrt(kc)) / (2 (1 + sqrt(kc))) = k^2 / (2 (1 + kc) (1 + sqrt(kc))^2), free of
-    # cancellation.
-    small = (k < 0.5) & ~zero
-    if np.any(small):
-        ks, kcs = k[small], kc[small]
-        scale = np.sqrt(2.0 * (1.0 + kcs)) * (1.0 + np.sqrt(kcs))
-        eps4 = (ks / scale) ** 8  # e <= 0.017 here, so e^17 is below rounding
-        root[small] = ks / scale * np.sqrt(1.0 + eps4 * (2.0 + eps4 * (15.0 + 150.0 * eps4)))
-    return root
+    return k, kc
 
 
 def nome(k: npt.ArrayLike, kc: npt.ArrayLike | None = None) -> FloatOrArray:
@@ -309,11 +280,12 @@ def nome(k: npt.ArrayLike, kc: npt.ArrayLike | None = None) -> FloatOrArray:
     :math:`K_1(k_c) = \pi/(2\,\mathrm{AGM}(1, k))`
     (DLMF 19.8.5), each from :func:`~elliptic_pendulum.elliptic.complete_integral` seeded with the
     complement it needs, so no difference :math:`1 - k^2` is ever formed and q has a small
-    relative error for :math:`k_c` small. For k < 1/2 the exponent :math:`\pi K'/K` (up to 700)
-    would pass its rounding on to q, so there q comes from its series in
+    relative error for :math:`k_c` small. For k up to about 0.955 the exponent :math:`\pi K'/K`
+    (up to 700) would pass its rounding on to q, so there q comes from its series in
     :math:`\varepsilon = (1 - \sqrt{k_c})/(2(1 + \sqrt{k_c}))`,
     :math:`q = \varepsilon + 2\varepsilon^5 + 15\varepsilon^9 + 150\varepsilon^{13} + \dots`
-    (Abramowitz and Stegun 17.3.21), :math:`\varepsilon` formed without cancellation.
+    (Abramowitz and Stegun 17.3.21, to :math:`\varepsilon^{33}`), :math:`\varepsilon`
+    formed without cancellation: q to a few ulp for every k.
 
     Examples
     --------
@@ -325,10 +297,8 @@ def nome(k: npt.ArrayLike, kc: npt.ArrayLike | None = None) -> FloatOrArray:
     >>> abs(nome(math.sqrt(0.5)) - math.exp(-math.pi)) < 1e-16
     True
     """
-    # For k below 1e-154, q ~ k^2/16 is below the doubles: 0 to rounding, without a warning.
-    with np.errstate(under="ignore"):
-        root, k = _root_nome(k, kc)
-        return scalar_or_array(root * root, k)
+    k, kc = _checked_pair(k, kc)
+    return scalar_or_array(nome_from_pair(k, kc), k)
 
 
 def fourier_coefficients(theta0: npt.ArrayLike, n: int) -> npt.NDArray[np.float64]:
@@ -389,7 +359,7 @@ def fourier_coefficients(theta0: npt.ArrayLike, n: int) -> npt.NDArray[np.float6
         half = 0.5 * theta0
         # k = sin(theta0/2) and kc = cos(theta0/2) both as computed, each to full precision:
         # recomputing k from kc (which rounds to 1 below theta0 ~ 2e-8) lost every digit of q.
-        root = _root_nome_pair(np.sin(half), np.cos(half))
+        root = root_nome_from_pair(np.sin(half), np.cos(half))
         # q^(j + 1/2) as a power of sqrt(q): representable even where q itself would underflow.
         power = root[..., None] ** odd
         return 8.0 * power / (odd * (1.0 + power * power))
