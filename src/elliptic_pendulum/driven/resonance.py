@@ -102,9 +102,11 @@ def backbone_frequency(amplitude: npt.ArrayLike | None = None, omega0: float = 1
     with np.errstate(under="ignore"):
         gamma = 2 * omega0 / speed
         gamma_c = np.sqrt((speed - 2 * omega0) / speed * (1.0 + gamma))
-    # speed * (pi / 2K) rather than pi * speed / 2K: the latter overflows beyond 5.7e307.
+    # speed * (pi / 2K) rather than pi * speed / 2K: the latter overflows beyond 5.7e307. For a
+    # subnormal speed (omega0 subnormal too) the frequency is subnormal: rounded, not an error.
     turn = (0.5 * math.pi) / np.asarray(complete_integral(gamma, kc=gamma_c))
-    return scalar_or_array(speed * turn, v)
+    with np.errstate(under="ignore"):
+        return scalar_or_array(speed * turn, v)
 
 
 def duffing_backbone(amplitude: npt.ArrayLike, omega0: float = 1.0) -> FloatOrArray:
@@ -145,7 +147,16 @@ def duffing_backbone(amplitude: npt.ArrayLike, omega0: float = 1.0) -> FloatOrAr
     if np.any(a < 0):
         raise ValueError(f"amplitude must be >= 0; got {a.tolist()!r}")
     omega0 = positive_scalar(omega0, "omega0")
-    return scalar_or_array(omega0 * (1 - a * a / 16), a)
+    # omega0 - (omega0 A/4)(A/4): no square of A on the way, which overflows from A ~ 1e154
+    # even where the result is a double. What underflows (A^2 of a tiny A, a subnormal
+    # omega0) is below the rounding of omega0 or rounds to a subnormal: not an error.
+    quarter = 0.25 * a
+    with np.errstate(under="ignore", over="ignore"):
+        result = omega0 - (omega0 * quarter) * quarter
+    if not np.all(np.isfinite(result)):
+        raise ValueError("amplitude is too large: omega0 (1 - amplitude**2/16) lies beyond the "
+                         f"range of doubles; got amplitude {a.tolist()!r}")
+    return scalar_or_array(result, a)
 
 
 @dataclass(frozen=True)
@@ -252,14 +263,17 @@ def _amplitude(sol) -> float:
     def theta(tau):  # the orbit is periodic: read tau modulo the period
         return float(sol.sol(tau % (2 * math.pi))[0])
 
-    samples = sol.sol(np.arange(256) * step)[0]
-    extremes = []
-    for sign, index in ((1.0, int(np.argmax(samples))), (-1.0, int(np.argmin(samples)))):
-        centre = index * step
-        found = optimize.minimize_scalar(lambda s, sg=sign: -sg * theta(s),
-                                         bounds=(centre - step, centre + step), method="bounded",
-                                         options={"xatol": 1e-10})
-        extremes.append(sign * max(sign * samples[index], -found.fun))
+    # A swing of 1e-300 (forcing 1e-300) underflows in the dense output's polynomial: its
+    # roundings to 0 are below the swing's own, no concern of the caller's np.errstate.
+    with np.errstate(under="ignore"):
+        samples = sol.sol(np.arange(256) * step)[0]
+        extremes = []
+        for sign, index in ((1.0, int(np.argmax(samples))), (-1.0, int(np.argmin(samples)))):
+            centre = index * step
+            found = optimize.minimize_scalar(lambda s, sg=sign: -sg * theta(s),
+                                             bounds=(centre - step, centre + step),
+                                             method="bounded", options={"xatol": 1e-10})
+            extremes.append(sign * max(sign * samples[index], -found.fun))
     return float(0.5 * (extremes[0] - extremes[1]))
 
 
