@@ -231,3 +231,21 @@ def test_response_curve_under_a_tiny_forcing_is_quiet():
     linear = 1e-200 / np.abs(1 - omega**2 + 2j * 0.1 * omega)
     assert len(omega) >= 2
     assert abs(curve.amplitude[0] / linear[0] - 1) < 1e-9
+
+
+@pytest.mark.parametrize("damping", [0.1, 3.0, 40.0])
+@pytest.mark.parametrize("forcing", [1e-20, 1e-100, 1e-260])
+def test_periodic_orbit_of_a_tiny_swing_is_the_linear_response(forcing, damping):
+    # The state's absolute tolerance was 1e-12 (DOP853) or floored at 1e-165 (LSODA): a swing
+    # below it was not resolved, and forcing 1e-20 at zeta = 3 gave 114 times the swing.
+    # Reference: the linear response F / |omega0^2 - Omega^2 + 2i zeta omega0 Omega|, exact to
+    # rounding at these swings (sin(theta) = theta to 1e-40 and better).
+    orbit = _silently(ep.periodic_orbit, 0.5, forcing, damping)
+    linear = forcing / abs(complex(1 - 0.25, 2 * damping * 0.5))
+    assert abs(orbit.amplitude / linear - 1) < 1e-9
+
+
+def test_periodic_orbit_refuses_a_forcing_too_small_to_resolve_naming_forcing():
+    with pytest.raises(ValueError, match=r"forcing must be 0 or give a linear response"):
+        ep.periodic_orbit(0.5, 1e-300, 0.1)
+    assert ep.periodic_orbit(0.5, 0.0, 0.1).amplitude == 0.0
