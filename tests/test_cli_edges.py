@@ -131,3 +131,30 @@ def test_cli_tiny_angles_and_rates_print_quietly(capsys, argv):
     # (rounded to nine decimals) all the same, so no FloatingPointError under errstate(raise).
     lines = _cli_runs(capsys, "solve", *argv)
     assert lines[0].startswith("# regime")
+
+
+def test_cli_refuses_a_grid_of_more_than_the_documented_rows(capsys):
+    # -1e308..1e308 by 1e303 is 200,001 rows: printed (in seconds) before; docs/cli.md says
+    # at most 100,000. One line naming --t, status 2, no traceback.
+    line = _cli_fails(capsys, "solve", "--theta0", "0", "--dtheta0", "114.59155902616465",
+                      "--t", "-1e308", "1e308", "1e303")
+    assert "--t" in line and "at most 100,000 rows" in line and "200,001" in line
+    _cli_fails(capsys, "solve", "--theta0", "30", "--t", "0", "100000", "1")  # 100,001 rows
+    assert len(_cli_runs(capsys, "solve", "--theta0", "30", "--t", "0", "99999", "1")) == 100_002
+
+
+@pytest.mark.parametrize("argv, column, expected", [
+    # Times of 1e308 printed as 309-digit integers; the grid -1e308 + k 1e306 is the exact
+    # double sum (the times the library evaluates), read back from the printed text.
+    (("--theta0", "0", "--dtheta0", "114.59155902616465", "--t", "-1e308", "1e308", "1e306"),
+     0, [-1e308 + k * 1e306 for k in range(201)]),
+    # A push of 1e150 deg/s printed as a 151-digit number: at t = 0, theta' is the push.
+    (("--theta0", "0", "--dtheta0", "1e150", "--t", "0", "0", "1"), 2, [1e150]),
+])
+def test_cli_huge_values_print_in_scientific_notation(capsys, argv, column, expected):
+    rows = [line.split() for line in _cli_runs(capsys, "solve", *argv)[2:]]
+    assert all(len(line) < 80 for line in map(" ".join, rows))
+    got = [float(row[column]) for row in rows]
+    assert len(got) == len(expected)
+    assert all(abs(g - e) <= 4 * math.ulp(e) for g, e in zip(got, expected, strict=True))
+    assert all("e+" in row[column] for row in rows if abs(float(row[column])) >= 1e15)

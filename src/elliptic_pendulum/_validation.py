@@ -3,6 +3,11 @@
 Every public function turns its arguments into float arrays here, so that a
 bad argument is reported once, in words a student can act on, and never
 travels on as a silent NaN.
+
+Masked arrays (``numpy.ma``) are refused with a TypeError naming the parameter:
+``np.asarray`` would drop the mask and compute the masked entries as if they
+were data, and what a mask should mean for a Motion or a tuple of results is not
+numpy's to say. Pass ``x.filled(value)`` or ``x.compressed()`` instead.
 """
 
 from __future__ import annotations
@@ -17,7 +22,7 @@ import numpy.typing as npt
 from ._engine import landen as _landen
 
 __all__ = ["FloatOrArray", "real_array", "real_scalar", "modulus_pair", "positive_array",
-           "positive_scalar", "scalar_or_array"]
+           "positive_scalar", "refuse_masked", "scalar_or_array"]
 
 #: What a public function returns: a Python float for scalar input, else a float array of
 #: the broadcast shape (see :func:`scalar_or_array`).
@@ -27,13 +32,28 @@ FloatOrArray = float | npt.NDArray[np.float64]
 _BEYOND_DOUBLES = "must be finite (a number within the range of doubles)"
 
 
+def _masked(value: Any) -> bool:
+    """Tell whether value is a masked array, or a list or tuple holding one (or np.ma.masked)."""
+    if isinstance(value, np.ma.MaskedArray):
+        return True
+    return isinstance(value, (list, tuple)) and any(_masked(item) for item in value)
+
+
+def refuse_masked(value: Any, name: str) -> None:
+    """Raise TypeError naming ``name`` if ``value`` is (or holds) a masked array."""
+    if _masked(value):
+        raise TypeError(f"{name} must not be a masked array (numpy.ma): its mask would be "
+                        f"ignored; pass {name}.filled(value) or {name}.compressed() instead")
+
+
 def real_array(value: Any, name: str) -> np.ndarray:
     """Return ``value`` as a finite float array, or raise naming ``name``.
 
     Booleans, strings, complex numbers and None are refused with TypeError
     (``True`` as a time or an angle is almost always a mistake); NaN and
-    infinities with ValueError.
+    infinities with ValueError; masked arrays with TypeError (see the module).
     """
+    refuse_masked(value, name)
     if isinstance(value, (bool, np.bool_, str, bytes)) or value is None:
         raise TypeError(f"{name} must be a real number or an array of real numbers, "
                         f"got {type(value).__name__}")
@@ -107,6 +127,7 @@ def modulus_pair(k: Any, kc: Any = None,
 
 def positive_scalar(value: Any, name: str) -> float:
     """Return ``value`` as a finite float > 0, or raise naming ``name``."""
+    refuse_masked(value, name)
     if not isinstance(value, numbers.Real) or isinstance(value, bool):
         if not (isinstance(value, np.ndarray) and value.ndim == 0):
             raise TypeError(f"{name} must be a real number, got {type(value).__name__}")

@@ -110,6 +110,11 @@ def _omega0(parser: _Parser, args: argparse.Namespace) -> float | None:
     return args.omega0
 
 
+# The most rows `solve` prints (docs/cli.md): a table to read, not a data file; 200,001 rows took
+# seconds to print. For more, the library: ep.solve(...).theta(t) on any array of times.
+MAX_ROWS = 100_000
+
+
 def _times(parser: _Parser, start: float, stop: float, step: float) -> np.ndarray:
     if not all(map(math.isfinite, (start, stop, step))):
         parser.error("--t START STOP STEP must be finite numbers")
@@ -121,9 +126,13 @@ def _times(parser: _Parser, start: float, stop: float, step: float) -> np.ndarra
     rows = (stop - start) / step
     if math.isinf(rows):
         rows = stop / step - start / step
-    if not rows < 10**7:
-        parser.error(f"--t would print more than 10**7 rows ({rows:.3g}); use a larger STEP")
+    if not rows < MAX_ROWS:  # also refuses a count whose floor would be out of reach
+        parser.error(f"--t START STOP STEP must give at most {MAX_ROWS:,} rows; "
+                     f"got {_count(rows)}; use a larger STEP")
     count = math.floor(rows * (1 + 1e-12)) + 1  # STOP itself when on the grid
+    if count > MAX_ROWS:
+        parser.error(f"--t START STOP STEP must give at most {MAX_ROWS:,} rows; got {count:,}; "
+                     "use a larger STEP")
     with np.errstate(over="ignore"):
         t = start + step * np.arange(count)
         if not np.all(np.isfinite(t)):  # step * k overflowed on the way to a finite time
@@ -143,6 +152,26 @@ def _radians(degrees: float) -> float:
     if not math.isfinite(degrees):
         return degrees
     return float(Fraction(degrees) * _PI / 180)
+
+
+def _count(rows: float) -> str:
+    """Return a row count for a message: exact with separators when small, else 3 digits."""
+    if rows < 1e15:
+        return f"{math.floor(rows) + 1:,}"
+    return f"about {rows:.3g}" if math.isfinite(rows) else "more than 1e308"
+
+
+# Beyond this size a column's fixed decimals would print a number of up to 309 digits (a time
+# of 1e308, a speed of 1e300 deg/s): there it is printed as repr, in scientific notation.
+_FIXED_BELOW = 1e15
+
+
+def _cell(x: float, decimals: int, width: int) -> str:
+    """Return one value of the solve table: fixed decimals, or repr for a huge value."""
+    if abs(x) >= _FIXED_BELOW:
+        return f"{repr(float(x)):>{width}}"
+    # round() first, + 0.0 then: a value like -1e-17 prints as 0, not as "-0.000...".
+    return f"{round(float(x), decimals) + 0.0:>{width}.{decimals}f}"
 
 
 def _number(x: float) -> str:
@@ -209,11 +238,8 @@ def _solve(parser: _Parser, args: argparse.Namespace) -> None:
     print(f"# regime {motion.regime.value} ({motion.regime.name.lower()}), {kind} {when}")
     rate = unit + "/" + ("s" if omega0 is not None else "unit")
     print(f"{'t':>12}  {'theta/' + unit:>16}  {'theta_dot/' + rate:>18}")
-    for row in zip(t, theta, dtheta, strict=True):
-        # round() first, + 0.0 then: a value like -1e-17 prints as 0, not as "-0.000...".
-        t_k, theta_k, dtheta_k = (round(float(x), n) + 0.0 for x, n in zip(row, (6, 9, 9),
-                                                                           strict=True))
-        print(f"{t_k:>12.6f}  {theta_k:>16.9f}  {dtheta_k:>18.9f}")
+    for t_k, theta_k, dtheta_k in zip(t, theta, dtheta, strict=True):
+        print(f"{_cell(t_k, 6, 12)}  {_cell(theta_k, 9, 16)}  {_cell(dtheta_k, 9, 18)}")
 
 
 def main(argv: Sequence[str] | None = None) -> int:

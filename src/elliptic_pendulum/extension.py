@@ -19,6 +19,7 @@ from collections.abc import Callable
 import numpy as np
 
 from ._engine.landen import _two_prod as _two_product  # Dekker's error-free product
+from ._validation import refuse_masked
 
 __all__ = ["periodic_extension", "staircase_extension", "one_sided_derivatives", "derivative_jump"]
 
@@ -37,6 +38,7 @@ def _validate(f, a):
 
 def _reduce(x, hi, lo):
     """Split x = 2 n a + r with n integer and |r| <= a; return (n, r, finite mask)."""
+    refuse_masked(x, "x")
     x = np.asarray(x, dtype=float)
     finite = np.isfinite(x)
     xs = np.where(finite, x, 0.0)  # f never sees inf or nan; those give nan below

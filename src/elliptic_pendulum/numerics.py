@@ -23,8 +23,12 @@ __all__ = ["integrate"]
 
 def _run(rhs, state, end, times, method, rtol, atol):
     """Integrate from t = 0 to ``end`` and return the state at ``times`` (ordered towards end)."""
-    solution = _integrate.solve_ivp(rhs, (0.0, end), state, method=method, t_eval=times,
-                                    rtol=rtol, atol=atol)
+    # solve_ivp's smallest step (nextafter(t, inf) - t) can be subnormal, and a tiny state
+    # underflows in its arithmetic: scipy's own roundings to 0, silent whatever the caller's
+    # np.errstate.
+    with np.errstate(under="ignore"):
+        solution = _integrate.solve_ivp(rhs, (0.0, end), state, method=method, t_eval=times,
+                                        rtol=rtol, atol=atol)
     if not solution.success:
         raise RuntimeError(f"solve_ivp ({method}) failed: {solution.message}")
     return solution.y

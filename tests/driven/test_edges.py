@@ -170,3 +170,82 @@ def test_periodic_orbit_cost_does_not_grow_with_the_damping(monkeypatch):
     monkeypatch.setattr(resonance.integrate, "solve_ivp", counting)
     ep.periodic_orbit(0.8, 0.2, 1000.0)
     assert counts and max(counts) < 10_000
+
+
+def test_backbone_frequency_of_a_subnormal_speed_is_quiet():
+    # v = 3 * 2^-1074, omega0 = 2^-1074: gamma = 2/3, and the frequency pi v / (2 K) is a
+    # subnormal, rounded to the grid of 2^-1074. speed * turn raised FloatingPointError
+    # (underflow) under np.errstate(all="raise"). Reference: mpmath at 50 digits.
+    got = _silently(ep.backbone_frequency, bottom_speed=1.5e-323, omega0=5e-324)
+    expected = _backbone_reference(speed=1.5e-323, omega0=5e-324)
+    assert abs(got - expected) <= 2.0**-1074
+
+
+@pytest.mark.parametrize("amplitude, omega0", [(1e-200, 1.0), (1.0, 5e-324), (0.5, 1e-310),
+                                               (1e155, 1e-10), (3.0, 2.0)])
+def test_duffing_backbone_is_quiet_wherever_it_is_a_double(amplitude, omega0):
+    # A^2 underflowed (tiny A), omega0 (1 - A^2/16) underflowed (subnormal omega0), and A^2
+    # overflowed at 1e155 though the result, -6.25e298, is a double. Reference: the exact
+    # rational omega0 (1 - A^2/16) of the two doubles, rounded once.
+    from fractions import Fraction
+
+    expected = float(Fraction(omega0) * (1 - Fraction(amplitude) ** 2 / 16))
+    got = _silently(ep.duffing_backbone, amplitude, omega0)
+    assert abs(got - expected) <= 2 * math.ulp(expected)
+
+
+@pytest.mark.parametrize("amplitude, omega0", [(1e200, 1.0), (1e150, 1e100)])
+def test_duffing_backbone_beyond_the_doubles_is_refused_naming_amplitude(amplitude, omega0):
+    with pytest.raises(ValueError, match="amplitude is too large"):
+        _silently(ep.duffing_backbone, amplitude, omega0)
+
+
+def _driven_module(name):
+    import importlib
+
+    return importlib.import_module(f"elliptic_pendulum.driven.{name}")
+
+
+def test_settle_and_integrate_with_a_slow_pendulum_are_quiet():
+    # omega0 = 1e-3: solve_ivp's smallest step, nextafter(t, inf) - t, underflowed inside scipy
+    # and the caller's np.errstate(all="raise") made it an error. The values must be those
+    # computed without the trap.
+    settle = _driven_module("sweep").settle
+    expected = settle(0.5, 0.1, 0.1, omega0=1e-3, periods=3)
+    assert _silently(settle, 0.5, 0.1, 0.1, omega0=1e-3, periods=3) == expected
+    from elliptic_pendulum import numerics
+
+    times = [0.0, 1.0, 50.0]
+    expected = numerics.integrate(1.0, omega0=1e-3, t=times)
+    got = _silently(numerics.integrate, 1.0, omega0=1e-3, t=times)
+    assert all(np.array_equal(a, b) for a, b in zip(got, expected, strict=True))
+
+
+def test_response_curve_under_a_tiny_forcing_is_quiet():
+    # F = 1e-200: the state's components are 1e-200 beside the frequency's 1, and their
+    # products underflowed in the tangent's norm and the dense output's polynomials.
+    # Reference: the linear response F / |omega0^2 - Omega^2 + 2i zeta omega0 Omega|, exact to
+    # rounding at a swing of 1e-200 (sin(theta) = theta there).
+    curve = _silently(ep.response_curve, 1e-200, 0.1, frequencies=(0.6, 0.7), step=0.05)
+    omega = curve.frequency
+    linear = 1e-200 / np.abs(1 - omega**2 + 2j * 0.1 * omega)
+    assert len(omega) >= 2
+    assert abs(curve.amplitude[0] / linear[0] - 1) < 1e-9
+
+
+@pytest.mark.parametrize("damping", [0.1, 3.0, 40.0])
+@pytest.mark.parametrize("forcing", [1e-20, 1e-100, 1e-260])
+def test_periodic_orbit_of_a_tiny_swing_is_the_linear_response(forcing, damping):
+    # The state's absolute tolerance was 1e-12 (DOP853) or floored at 1e-165 (LSODA): a swing
+    # below it was not resolved, and forcing 1e-20 at zeta = 3 gave 114 times the swing.
+    # Reference: the linear response F / |omega0^2 - Omega^2 + 2i zeta omega0 Omega|, exact to
+    # rounding at these swings (sin(theta) = theta to 1e-40 and better).
+    orbit = _silently(ep.periodic_orbit, 0.5, forcing, damping)
+    linear = forcing / abs(complex(1 - 0.25, 2 * damping * 0.5))
+    assert abs(orbit.amplitude / linear - 1) < 1e-9
+
+
+def test_periodic_orbit_refuses_a_forcing_too_small_to_resolve_naming_forcing():
+    with pytest.raises(ValueError, match=r"forcing must be 0 or give a linear response"):
+        ep.periodic_orbit(0.5, 1e-300, 0.1)
+    assert ep.periodic_orbit(0.5, 0.0, 0.1).amplitude == 0.0

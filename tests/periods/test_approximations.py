@@ -19,6 +19,7 @@ from elliptic_pendulum.periods import (
     ratio_approximations,
 )
 from tests import mpref
+from tests.strict import quietly as _silently
 
 
 def test_agm_steps_converge_quadratically():
@@ -110,3 +111,19 @@ def test_steps_and_terms_are_checked():
         agm_ratio(1.0, -1)
     with pytest.raises(ValueError, match="terms"):
         log_ratio(1.0, 3)
+
+
+@pytest.mark.parametrize("theta0", [math.pi - 1e-12, math.nextafter(math.pi, 0), 3.0, 2.5,
+                                    2.0943951023931953, 2.0, 1.0, 1e-3, 1e-8])
+def test_lima_arun_ratio_is_its_formula_to_a_few_ulp(theta0):
+    # Near the top 1 - x (x = 2 sin^2(theta0/4)) kept only x's absolute rounding: at
+    # pi - 1e-12 the result was 4.3e-6 off. Reference: -log(a)/(1 - a), a = cos(theta0/2) of
+    # the exact double theta0, in mpmath at 60 digits.
+    import mpmath
+
+    ctx = mpmath.MPContext()
+    ctx.dps = 60
+    a = ctx.cos(ctx.mpf(theta0) / 2)
+    expected = -ctx.log(a) / (1 - a)
+    got = _silently(lima_arun_ratio, theta0)
+    assert abs(got - expected) <= 4 * 2.0**-52 * expected

@@ -184,3 +184,79 @@ def test_period_series_does_not_recompute_kept_coefficients(monkeypatch):
     assert ep.period_series(0.5, 150) == expected
     assert ep.period_series_coefficients(150) == coefficients
     assert ep.period_series_coefficients(120) == coefficients[:120]
+
+
+def _exact_partial_sum(theta0, terms):
+    """sum_{j < terms} a_j theta0^2j from the exact fractions, in mpmath at 60 digits."""
+    import mpmath
+
+    ctx = mpmath.MPContext()
+    ctx.dps = 60
+    x = ctx.mpf(theta0) ** 2
+    total = ctx.mpf(0)
+    for a in reversed(ep.period_series_coefficients(terms)):
+        total = total * x + ctx.mpf(a.numerator) / a.denominator
+    return total
+
+
+@pytest.mark.parametrize("terms", [331, 400, 700])
+def test_period_series_beyond_330_terms_against_the_exact_partial_sums(terms):
+    # The coefficients a_j ~ pi^(-2j) leave the doubles near j = 330: summed as doubles, every
+    # term from there on was 0 and period_series(3.14, 400) was the 330-term sum 4.8889.
+    # Reference: the exact rational coefficients summed in mpmath at 60 digits. The tolerance
+    # is the conditioning of the sum near the radius (theta0 d log R_N / d theta0 ~ 400),
+    # times a few roundings.
+    expected = float(_exact_partial_sum(3.14, terms))
+    assert abs(_silently(ep.period_series, 3.14, terms) / expected - 1) < 2e-13
+
+
+def test_period_series_with_very_many_terms_reaches_r():
+    # 60,000 terms at 3.14 rad: the tail beyond is about r^60000 / (1 - r) with
+    # r = (3.14/pi)^2, below 1e-24. Reference R = (2/pi) K(sin^2(1.57)) from mpmath at 50 digits.
+    got = _silently(ep.period_series, np.array([3.14, -1.0]), 60_000)
+    expected = np.array([float(mpref.ratio(3.14)), float(mpref.ratio(-1.0))])
+    assert np.all(np.abs(got / expected - 1) < 1e-12)
+
+
+def test_scaled_coefficients_against_the_exact_ones():
+    # b_j = a_j c^2j (c = math.pi) from the fixed-point recurrence, against the exact rational
+    # a_j times the exact dyadic c^2j, rounded once: the same double up to an ulp.
+    from fractions import Fraction
+
+    from elliptic_pendulum.periods._scaled import scaled_coefficients
+
+    exact = ep.period_series_coefficients(700)
+    got = scaled_coefficients(700)
+    c2 = Fraction(math.pi) ** 2
+    for j in (0, 1, 2, 50, 329, 330, 331, 500, 699):
+        expected = float(exact[j] * c2**j)
+        assert abs(got[j] - expected) <= 2.0**-52 * expected, j
+
+
+def test_period_series_refuses_more_terms_than_it_sums():
+    from elliptic_pendulum.periods._scaled import MAX_TERMS
+
+    with pytest.raises(ValueError, match=r"terms must be at most 1,000,000.*got 1000001"):
+        ep.period_series(3.0, MAX_TERMS + 1)
+
+
+def test_period_series_of_a_tiny_amplitude_is_quiet():
+    # theta0^2 underflows; the sum is 1 to rounding (a_1 theta0^2 < 1e-400).
+    assert _silently(ep.period_series, 1e-200, 400) == 1.0
+
+
+@pytest.mark.parametrize("value", [1 + 2.0**-52, 1 + 1e-12, 1 + 1e-8, 1.001, 1.3, 1.9999])
+def test_crossing_angle_near_one_keeps_its_relative_accuracy(value):
+    # R - v cancelled near v = 1, and theta0 = pi - x kept only the absolute accuracy of x:
+    # crossing_angle(1 + 1e-12) was 4.0001225e-06 for 4.0001778e-06. Reference: the root of
+    # (2/pi) K(sin^2(theta/2)) = v by mpmath at 60 digits, bracketed by R - 1 >= theta^2/16.
+    import mpmath
+
+    ctx = mpmath.MPContext()
+    ctx.dps = 60
+    v = ctx.mpf(value)
+    high = min(4 * ctx.sqrt(v - 1) * (1 + ctx.mpf("1e-6")), ctx.mpf("2.8"))
+    expected = ctx.findroot(lambda t: 2 / ctx.pi * ctx.ellipk(ctx.sin(t / 2) ** 2) - v,
+                            (high / 2, high), solver="anderson")
+    got = _silently(ep.crossing_angle, value)
+    assert abs(got - expected) <= 4 * 2.0**-52 * expected

@@ -206,3 +206,14 @@ def test_fourier_coefficients_limits():
 def test_fourier_coefficients_refuse_non_swings(bad):
     with pytest.raises(ValueError, match="theta0"):
         fourier_coefficients(bad, 3)
+
+
+def test_nome_is_good_to_a_few_ulp_for_every_modulus():
+    # Just above k = 1/2 q came from exp(-pi K'/K) with an exponent near 4, whose rounding
+    # left q 5 ulp off (1.1e-15). Reference: mpmath's qfrom at 60+ digits.
+    rng = np.random.default_rng(20240)
+    k = np.concatenate([rng.uniform(0.5, 0.52, 600), rng.uniform(0.0, 1.0, 600),
+                        1 - np.geomspace(1e-12, 0.5, 100)])
+    got = nome(k)
+    rel = [abs(g / float(mp_nome_from_k(x)) - 1) for g, x in zip(got, k, strict=True)]
+    assert max(rel) < 3 * 2.0**-52

@@ -171,8 +171,11 @@ def _tangent(flow, previous):
     _, monodromy, sensitivity, _ = flow
     rows = np.column_stack([monodromy - np.eye(2), sensitivity])
     t = np.cross(rows[0], rows[1])
-    t /= np.linalg.norm(t)
-    return t if t @ previous >= 0 else -t
+    # Under a tiny forcing the state's components are tiny beside the frequency's, and their
+    # products in the norm and the dot product underflow: negligible there, not an error.
+    with np.errstate(under="ignore"):
+        t /= np.linalg.norm(t)
+        return t if t @ previous >= 0 else -t
 
 
 def response_curve(forcing: float, damping: float, omega0: float = 1.0, *,

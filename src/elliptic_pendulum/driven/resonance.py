@@ -102,9 +102,11 @@ def backbone_frequency(amplitude: npt.ArrayLike | None = None, omega0: float = 1
     with np.errstate(under="ignore"):
         gamma = 2 * omega0 / speed
         gamma_c = np.sqrt((speed - 2 * omega0) / speed * (1.0 + gamma))
-    # speed * (pi / 2K) rather than pi * speed / 2K: the latter overflows beyond 5.7e307.
+    # speed * (pi / 2K) rather than pi * speed / 2K: the latter overflows beyond 5.7e307. For a
+    # subnormal speed (omega0 subnormal too) the frequency is subnormal: rounded, not an error.
     turn = (0.5 * math.pi) / np.asarray(complete_integral(gamma, kc=gamma_c))
-    return scalar_or_array(speed * turn, v)
+    with np.errstate(under="ignore"):
+        return scalar_or_array(speed * turn, v)
 
 
 def duffing_backbone(amplitude: npt.ArrayLike, omega0: float = 1.0) -> FloatOrArray:
@@ -145,7 +147,16 @@ def duffing_backbone(amplitude: npt.ArrayLike, omega0: float = 1.0) -> FloatOrAr
     if np.any(a < 0):
         raise ValueError(f"amplitude must be >= 0; got {a.tolist()!r}")
     omega0 = positive_scalar(omega0, "omega0")
-    return scalar_or_array(omega0 * (1 - a * a / 16), a)
+    # omega0 - (omega0 A/4)(A/4): no square of A on the way, which overflows from A ~ 1e154
+    # even where the result is a double. What underflows (A^2 of a tiny A, a subnormal
+    # omega0) is below the rounding of omega0 or rounds to a subnormal: not an error.
+    quarter = 0.25 * a
+    with np.errstate(under="ignore", over="ignore"):
+        result = omega0 - (omega0 * quarter) * quarter
+    if not np.all(np.isfinite(result)):
+        raise ValueError("amplitude is too large: omega0 (1 - amplitude**2/16) lies beyond the "
+                         f"range of doubles; got amplitude {a.tolist()!r}")
+    return scalar_or_array(result, a)
 
 
 @dataclass(frozen=True)
@@ -192,6 +203,12 @@ _RTOL, _ATOL = 1e-11, 1e-12
 # threshold nothing changes.
 _STIFF_RATE = 50.0
 _STIFF_RTOL, _STIFF_ATOL = 3e-14, 1e-15
+# The absolute tolerance of the state scales with its size down to this (a normal double even
+# times 1e-15); a swing below it would be lost in the tolerance.
+_SMALLEST_SIZE = 1e-280
+# The smallest nonzero linear response (radians) periodic_orbit resolves: room above
+# _SMALLEST_SIZE for the nonlinear and transient parts of the swing.
+_SMALLEST_RESPONSE = 1e-270
 
 
 def _flow(y0, frequency, forcing, damping, omega0, dense=False):
@@ -225,16 +242,18 @@ def _flow(y0, frequency, forcing, damping, omega0, dense=False):
         return jac
 
     start = [y0[0], y0[1], 1.0, 0.0, 0.0, 1.0, 0.0, 0.0]
+    # The absolute tolerance of the state follows its size (the linear response plus the
+    # start), or a swing of 1e-8 would be resolved to 1e-15 only, a relative 1e-7, and one
+    # below the tolerance not at all (forcing 1e-20 at zeta = 3 gave 114 times the swing).
+    # The sensitivities are O(1).
+    size = min(1.0, abs(forcing) / abs(complex(w2 - frequency**2, c * frequency)) +
+               math.hypot(y0[0], y0[1]))
     if c * inv > _STIFF_RATE:
-        # Heavy damping keeps the swing small (the linear response, ~F / (2 zeta omega0
-        # Omega)); the absolute tolerance of the state follows its size, or a swing of 1e-8
-        # would be resolved to 1e-15 only, a relative 1e-7. The sensitivities are O(1).
-        size = min(1.0, abs(forcing) / abs(complex(w2 - frequency**2, c * frequency)) +
-                   math.hypot(y0[0], y0[1]))
-        atol = [_STIFF_ATOL * max(size, 1e-150)] * 2 + [_STIFF_ATOL] * 6
+        atol = [_STIFF_ATOL * max(size, _SMALLEST_SIZE)] * 2 + [_STIFF_ATOL] * 6
         options = {"method": "LSODA", "jac": jacobian, "rtol": _STIFF_RTOL, "atol": atol}
     else:
-        options = {"method": "DOP853", "rtol": _RTOL, "atol": _ATOL}
+        atol = [_ATOL * max(size, _SMALLEST_SIZE)] * 2 + [_ATOL] * 6
+        options = {"method": "DOP853", "rtol": _RTOL, "atol": atol}
     # solve_ivp's first step size is bounded below by nextafter(0) - 0, a subnormal: an
     # underflow of scipy's own that is no concern of the caller's np.errstate.
     with np.errstate(under="ignore"):
@@ -252,14 +271,17 @@ def _amplitude(sol) -> float:
     def theta(tau):  # the orbit is periodic: read tau modulo the period
         return float(sol.sol(tau % (2 * math.pi))[0])
 
-    samples = sol.sol(np.arange(256) * step)[0]
-    extremes = []
-    for sign, index in ((1.0, int(np.argmax(samples))), (-1.0, int(np.argmin(samples)))):
-        centre = index * step
-        found = optimize.minimize_scalar(lambda s, sg=sign: -sg * theta(s),
-                                         bounds=(centre - step, centre + step), method="bounded",
-                                         options={"xatol": 1e-10})
-        extremes.append(sign * max(sign * samples[index], -found.fun))
+    # A swing of 1e-300 (forcing 1e-300) underflows in the dense output's polynomial: its
+    # roundings to 0 are below the swing's own, no concern of the caller's np.errstate.
+    with np.errstate(under="ignore"):
+        samples = sol.sol(np.arange(256) * step)[0]
+        extremes = []
+        for sign, index in ((1.0, int(np.argmax(samples))), (-1.0, int(np.argmin(samples)))):
+            centre = index * step
+            found = optimize.minimize_scalar(lambda s, sg=sign: -sg * theta(s),
+                                             bounds=(centre - step, centre + step),
+                                             method="bounded", options={"xatol": 1e-10})
+            extremes.append(sign * max(sign * samples[index], -found.fun))
     return float(0.5 * (extremes[0] - extremes[1]))
 
 
@@ -306,7 +328,9 @@ def periodic_orbit(frequency: float, forcing: float, damping: float, omega0: flo
     Raises
     ------
     ValueError
-        For a parameter out of range.
+        For a parameter out of range; for a forcing whose linear response
+        :math:`|F|/|\omega_0^2 - \Omega^2 + 2i\zeta\omega_0\Omega|` is nonzero but below
+        1e-270, which the integration cannot resolve.
     RuntimeError
         If Newton's method does not converge from the guess.
 
@@ -328,6 +352,12 @@ def periodic_orbit(frequency: float, forcing: float, damping: float, omega0: flo
     damping = positive_scalar(damping, "damping")
     omega0 = positive_scalar(omega0, "omega0")
     tol = positive_scalar(tol, "tol")
+    response = abs(forcing) / abs(complex(omega0 * omega0 - frequency * frequency,
+                                          2 * damping * omega0 * frequency))
+    if 0.0 < response < _SMALLEST_RESPONSE:
+        raise ValueError(f"forcing must be 0 or give a linear response |F| / |omega0^2 - "
+                         f"Omega^2 + 2i zeta omega0 Omega| of at least {_SMALLEST_RESPONSE:g}; "
+                         f"got forcing={forcing!r}, whose response is {response:.3g}")
     start = (_linear_guess(frequency, forcing, damping, omega0) if guess is None
              else real_array(guess, "guess"))
     if np.shape(start) != (2,):

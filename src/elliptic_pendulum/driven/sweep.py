@@ -93,11 +93,15 @@ def settle(frequency: float, forcing: float, damping: float, omega0: float = 1.0
 
     span = 2 * math.pi / frequency
     end = count * span
-    sol = integrate.solve_ivp(rhs, (0.0, end), start.tolist(), method="DOP853", rtol=1e-11,
-                              atol=1e-12, dense_output=True)
-    if not sol.success:  # pragma: no cover - DOP853 on a smooth bounded field
-        raise RuntimeError(f"solve_ivp failed: {sol.message}")
-    theta = sol.sol(np.linspace(end - span, end, 4001))[0]
+    # solve_ivp's smallest step (nextafter(t, inf) - t) can be subnormal, and a tiny swing
+    # (forcing 1e-300) underflows in its arithmetic and its dense output: scipy's own
+    # roundings to 0, no concern of the caller's np.errstate.
+    with np.errstate(under="ignore"):
+        sol = integrate.solve_ivp(rhs, (0.0, end), start.tolist(), method="DOP853", rtol=1e-11,
+                                  atol=1e-12, dense_output=True)
+        if not sol.success:  # pragma: no cover - DOP853 on a smooth bounded field
+            raise RuntimeError(f"solve_ivp failed: {sol.message}")
+        theta = sol.sol(np.linspace(end - span, end, 4001))[0]
     final = sol.y[:, -1]
     return (float(final[0]), float(final[1])), float(0.5 * (theta.max() - theta.min()))
 

@@ -39,6 +39,7 @@ import numpy as np
 import numpy.typing as npt
 
 from .._validation import positive_scalar, real_array, real_scalar, scalar_or_array
+from ..elliptic import incomplete_integral
 from ..motion import Motion, solve
 from ..regimes import Regime
 
@@ -145,7 +146,40 @@ def _slack(motion: Motion) -> float | None:
         top = 1.0 / motion.omega0
         while tension(top) >= 0.0:
             top *= 2.0
+        return float(optimize.brentq(tension, 0.0, top, xtol=1e-300,
+                                     rtol=4 * np.finfo(float).eps))
+    # The rounding of T (a few ulp of 3 w0^2) moves its computed zero by that over |dT/dt| =
+    # 3 w0^3 sin(theta_s) sqrt(e/3), e = c1 / w0^2 (theta'^2 = w0^2 e / 3 at the slack point).
+    # Near 90 degrees (e -> 0) or near the top (e -> 3) that slope vanishes: T is flat within
+    # its rounding over a stretch of time where Brent's method lands anywhere, or finds no sign
+    # change at all. The time back from the top, in closed form, is good to a few ulp of top.
+    e = c1 / w2
+    slope = math.sqrt(e / 3.0) * math.sqrt(max(0.0, 1.0 - (e / 3.0) ** 2))
+    if slope * motion.omega0 * top < 1.0:
+        return max(0.0, top - _before_top(motion, e))
     return float(optimize.brentq(tension, 0.0, top, xtol=1e-300, rtol=4 * np.finfo(float).eps))
+
+
+def _before_top(motion: Motion, e: float) -> float:
+    r"""Return the time from the slack point, cos(theta_s) = -e/3, to the next highest point.
+
+    Counted back from the top by the elliptic argument v, :math:`\sin(\theta_s/2) =
+    k\,\mathrm{cd}(v)` in a swing (modulus k, :math:`k^2 = (2 + e)/4`) and
+    :math:`\mathrm{cd}(v)` in a rotation (modulus :math:`\gamma^2 = 4/(2 + e)`, argument
+    :math:`\omega_0 t/\gamma`), since :math:`\mathrm{sn}(K - v) = \mathrm{cd}(v)`. Solved for sn:
+
+    .. math:: \mathrm{sn}^2 v = \frac{2e}{(2 + e)(3 - e)} \text{ (swing)}, \qquad
+              \mathrm{sn}^2 v = \frac{(3 - e)(2 + e)}{2e} \text{ (rotation)},
+
+    free of cancellation where e is small or near 3, and v = E1(sn v) by (17).
+    """
+    if motion.regime is Regime.LIBRATION:
+        square, scale = 2.0 * e / ((2.0 + e) * (3.0 - e)), 1.0
+    else:
+        square, scale = (3.0 - e) * (2.0 + e) / (2.0 * e), motion.modulus
+    v = incomplete_integral(math.sqrt(min(square, 1.0)), motion.modulus,
+                            kc=motion.complementary_modulus)
+    return float(scale * v / motion.omega0)
 
 
 def slack_point(theta0: float, dtheta0: float = 0.0,
@@ -174,7 +208,10 @@ def slack_point(theta0: float, dtheta0: float = 0.0,
     -----
     T decreases only while the bob climbs, so the first zero lies between t = 0 and the next
     highest point of the motion (turning point, top, or, on the separatrix, a time found by
-    doubling); Brent's method finds it to a few ulp.
+    doubling); Brent's method finds it to a few ulp. Where T falls too slowly for its rounding
+    (swings that pass 90 degrees by a hair, rotations that nearly stay taut) the time is
+    counted back from the highest point in closed form instead (the elliptic argument between
+    the two, from sn^2 as a rational function of c1).
 
     Examples
     --------
@@ -303,7 +340,10 @@ def free_flight(theta0: float, dtheta0: float = 0.0, omega0: float = 1.0) -> Fre
     if t_slack == 0.0:
         theta, w = theta0, dtheta0
     else:
-        theta, w = float(motion.theta(t_slack)), float(motion.dtheta(t_slack))
+        # At the slack point theta'^2 = c1 - 2 w0^2 cos(theta_s) = c1 / 3 exactly: near 90
+        # degrees theta' is tiny there, and dtheta(t) would carry its absolute rounding.
+        theta = float(motion.theta(t_slack))
+        w = math.copysign(math.sqrt(motion.energy_constant / 3.0), motion.dtheta(t_slack))
     g = omega0**2
     vx, vy = w * math.cos(theta), w * math.sin(theta)
     # T / (m l); at a slack point after t = 0 it is zero by definition (its computed value is

@@ -183,10 +183,11 @@ def lima_arun_ratio(theta0: npt.ArrayLike) -> FloatOrArray:
     Notes
     -----
     Evaluated as :math:`-\mathrm{log1p}(-x)/x` with :math:`x = 1 - a = 2\sin^2(\theta_0/4)`, free
-    of cancellation at small amplitude. Its series is :math:`1 + \theta_0^2/16 +
-    \theta_0^4/256 + \dots`, high by :math:`\theta_0^4/3072`; near the top it grows like
-    :math:`\log(1/k_c)`, above R's :math:`(2/\pi)\log(4/k_c)` by a factor tending (slowly) to
-    :math:`\pi/2`.
+    of cancellation at small amplitude, and from a itself where :math:`a < 1/2` (beyond 120
+    degrees), where :math:`1 - x` would keep only the absolute rounding of x. Its series is
+    :math:`1 + \theta_0^2/16 + \theta_0^4/256 + \dots`, high by :math:`\theta_0^4/3072`; near
+    the top it grows like :math:`\log(1/k_c)`, above R's :math:`(2/\pi)\log(4/k_c)` by a factor
+    tending (slowly) to :math:`\pi/2`.
 
     Examples
     --------
@@ -196,8 +197,14 @@ def lima_arun_ratio(theta0: npt.ArrayLike) -> FloatOrArray:
     """
     theta0 = _amplitudes(theta0)
     x = 2.0 * np.sin(0.25 * theta0) ** 2
+    a = np.cos(0.5 * theta0)
     safe = np.where(x > 0, x, 0.5)  # any value that keeps log1p finite where x = 0
-    return scalar_or_array(np.where(x > 0, -np.log1p(-safe) / safe, 1.0), theta0)
+    # Near the top a = 1 - x is small and 1 - x keeps only x's absolute rounding (4e-6 of the
+    # result at pi - 1e-12): there log(a) takes a itself, which cos gives to full precision.
+    near_top = a < 0.5
+    logarithm = np.where(near_top, np.log(np.where(near_top, a, 1.0)), np.log1p(-safe))
+    return scalar_or_array(np.where(x > 0, -logarithm / np.where(near_top, 1.0 - a, safe), 1.0),
+                           theta0)
 
 
 def ratio_approximations(theta0: npt.ArrayLike) -> dict[str, FloatOrArray]:

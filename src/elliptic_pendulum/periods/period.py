@@ -280,6 +280,22 @@ def _ratio_near_top(x):
     return float(complete_integral(math.cos(0.5 * x), kc=math.sin(0.5 * x))) / (0.5 * math.pi)
 
 
+def _ratio_excess(theta0: float) -> float:
+    """R - 1 at the amplitude theta0 in [0, pi), to a few ulp even where R rounds to 1."""
+    # R = 1/M, M = AGM(1, cos(theta0/2)), so R - 1 = (1 - M)/M, and 1 - M is the sum of the
+    # steps a_n - a_(n+1) = d_n/2, d_n = a_n - b_n, each formed without cancellation:
+    # d_0 = 1 - cos(theta0/2) = 2 sin^2(theta0/4), d_(n+1) = (sqrt a_n - sqrt b_n)^2 / 2.
+    a, b = 1.0, math.cos(0.5 * theta0)
+    d = 2.0 * math.sin(0.25 * theta0) ** 2
+    drop = 0.0
+    while d > 1e-17 * drop:
+        drop += 0.5 * d
+        root_a, root_b = math.sqrt(a), math.sqrt(b)
+        a, b = 0.5 * (a + b), root_a * root_b
+        d = d * d / (2.0 * (root_a + root_b) ** 2)
+    return drop / a
+
+
 def crossing_angle(value: npt.ArrayLike) -> FloatOrArray:
     r"""Find the amplitude at which the period ratio R reaches a given value.
 
@@ -306,9 +322,12 @@ def crossing_angle(value: npt.ArrayLike) -> FloatOrArray:
     Notes
     -----
     R increases from 1 to infinity on :math:`[0, \pi)`, so there is one root;
-    :func:`scipy.optimize.brentq` finds it in the distance :math:`x = \pi - \theta_0` from the
-    top, where :math:`k_c = \sin(x/2)` and the relative tolerance apply to x itself, and the
-    amplitude is then rounded from :math:`\pi - x` with pi's lost low-order bits added back.
+    :func:`scipy.optimize.brentq` finds it. From ``value`` 2 on it works in the distance
+    :math:`x = \pi - \theta_0` from the top, where :math:`k_c = \sin(x/2)` and the relative
+    tolerance apply to x itself, and the amplitude is then rounded from :math:`\pi - x` with
+    pi's lost low-order bits added back. Below 2 it solves :math:`R - 1 = v - 1` in
+    :math:`\theta_0` itself, R - 1 from the AGM's steps (no difference of nearly equal
+    numbers), so an amplitude near 0 keeps its relative accuracy.
 
     Examples
     --------
@@ -335,7 +354,17 @@ def crossing_angle(value: npt.ArrayLike) -> FloatOrArray:
         )
     angles = np.zeros(values.shape)  # R(0) = 1 exactly: value 1 keeps its 0
     for index, target in np.ndenumerate(values):
-        if target > 1.0:
+        if 1.0 < target < 2.0:
+            # Near 1, R - v cancels and pi - x keeps only the absolute accuracy of x: solved
+            # instead in theta0 for R - 1 = v - 1 (exact), bracketed by R - 1 >= theta0^2/16
+            # (positive coefficients), so theta0 <= 4 sqrt(v - 1), and R - 1 at half of theta0
+            # is at most a quarter of it; R(2.8) > 2.
+            excess = target - 1.0
+            high = min(4.0 * (1.0 + 1e-6) * math.sqrt(excess), 2.8)
+            angles[index] = optimize.brentq(lambda t, v=excess: _ratio_excess(t) - v,
+                                            0.5 * high, high, xtol=1e-300,
+                                            rtol=4 * np.finfo(float).eps)
+        elif target >= 2.0:
             x = optimize.brentq(lambda x, v=target: _ratio_near_top(x) - v, _SMALLEST_DISTANCE,
                                 math.pi, xtol=1e-300, rtol=4 * np.finfo(float).eps)
             angles[index] = (math.pi - x) + _PI_LO

@@ -33,7 +33,8 @@ import numpy as np
 import numpy.typing as npt
 
 from .._validation import FloatOrArray, real_array, scalar_or_array
-from ..elliptic import complete_integral
+from ._nome import nome_from_pair, root_nome_from_pair
+from ._scaled import MAX_TERMS, scaled_coefficients
 
 __all__ = ["fourier_coefficients", "nome", "period_series", "period_series_coefficients"]
 
@@ -157,6 +158,11 @@ def _coefficients(n: int) -> tuple[Fraction, ...]:
     return tuple(Fraction(e, 64**j * math.factorial(2 * j)) for j, e in enumerate(_scaled(n)))
 
 
+# period_series sums a_0 .. a_{_HEAD - 1} as doubles (exactly rounded, so that two terms are
+# 1 + theta0^2 / 16 to the last bit), and the scaled coefficients of ._scaled after them.
+_HEAD = 200
+
+
 @functools.lru_cache(maxsize=16)
 def _float_coefficients(n: int) -> tuple[float, ...]:
     """Return a_0, ..., a_{n-1} rounded to doubles, for summing the series."""
@@ -174,7 +180,8 @@ def period_series(theta0: npt.ArrayLike, terms: int) -> FloatOrArray:
     theta0 : float or array_like
         Amplitude in radians, :math:`|\theta_0| < \pi` (the radius of convergence).
     terms : int
-        N, the number of terms (``terms=1`` gives 1, the small-angle period (8)).
+        N, the number of terms (``terms=1`` gives 1, the small-angle period (8)), at most
+        1,000,000: enough for a sum within rounding of R up to :math:`\pi - 5\cdot10^{-5}`.
 
     Returns
     -------
@@ -184,7 +191,15 @@ def period_series(theta0: npt.ArrayLike, terms: int) -> FloatOrArray:
     Raises
     ------
     ValueError
-        If an amplitude is not finite or :math:`|\theta_0| \ge \pi`: there the series diverges.
+        If an amplitude is not finite or :math:`|\theta_0| \ge \pi`: there the series diverges;
+        or if ``terms`` exceeds 1,000,000.
+
+    Notes
+    -----
+    Beyond 200 terms the :math:`a_j` (which shrink like :math:`\pi^{-2j}` and leave the doubles
+    near j = 330) are summed scaled, as :math:`a_j c^{2j}\,(\theta_0/c)^{2j}` with c the double
+    nearest pi; the scaled coefficients come from a recurrence of fixed cost per term (the
+    module ``_scaled``), computed once and kept.
 
     Examples
     --------
@@ -200,18 +215,32 @@ def period_series(theta0: npt.ArrayLike, terms: int) -> FloatOrArray:
     """
     theta0 = real_array(theta0, "theta0")
     terms = _count(terms, "terms")
+    if terms > MAX_TERMS:
+        raise ValueError(f"terms must be at most {MAX_TERMS:,} (the series is summed term by "
+                         f"term); got {terms}")
     if np.any(np.abs(theta0) >= math.pi):
         raise ValueError("theta0 must satisfy |theta0| < pi (the series of R converges only "
                          f"there); got {theta0.tolist()!r}")
-    x = theta0 * theta0
-    total = np.zeros_like(x)
-    for coefficient in reversed(_float_coefficients(terms)):
-        total = total * x + coefficient
+    # Tiny amplitudes underflow in the powers; 0 is those terms' value to rounding.
+    with np.errstate(under="ignore"):
+        x = theta0 * theta0
+        total = np.zeros_like(x)
+        for coefficient in reversed(_float_coefficients(min(terms, _HEAD))):
+            total = total * x + coefficient
+        if terms > _HEAD:
+            # Beyond _HEAD the a_j approach the bottom of the doubles (below 1e-308 from
+            # j = 330 on, and they were summed as 0): the rest is sum_j b_j y^j with
+            # b_j = a_j c^2j and y = (theta0 / c)^2 <= 1, c = math.pi, each factor a double.
+            y = np.square(theta0 / math.pi)
+            tail = np.zeros_like(y)
+            for coefficient in scaled_coefficients(terms)[:_HEAD - 1:-1]:
+                tail = tail * y + coefficient
+            total = total + tail * y**_HEAD
     return scalar_or_array(total, theta0)
 
 
-def _root_nome(k: Any, kc: Any) -> tuple[np.ndarray, np.ndarray]:
-    r"""(sqrt(q), k) with the modulus pair checked: 0 where k = 0, 1 where k = 1."""
+def _checked_pair(k: Any, kc: Any) -> tuple[np.ndarray, np.ndarray]:
+    """(k, kc) with the modulus pair checked, the one not given formed from the other."""
     if kc is None:
         k = real_array(k, "k")
         if np.any((k < 0) | (k > 1)):
@@ -223,36 +252,7 @@ def _root_nome(k: Any, kc: Any) -> tuple[np.ndarray, np.ndarray]:
         if np.any((kc < 0) | (kc > 1)):
             raise ValueError("kc (the complementary modulus sqrt(1 - k**2)) must lie in [0, 1]")
         k = np.sqrt((1.0 - kc) * (1.0 + kc))
-    return _root_nome_pair(k, kc), k
-
-
-def _root_nome_pair(k: np.ndarray, kc: np.ndarray) -> np.ndarray:
-    r"""sqrt(q) from a modulus pair each known to full relative precision (already checked).
-
-    Neither is recomputed from the other: kc = cos(theta0/2) rounds to 1 for small swings and
-    k = sqrt(1 - kc^2) would then be 0 (the nome with it), so the caller passes both.
-    """
-    k, kc = np.broadcast_arrays(np.asarray(k, dtype=float), np.asarray(kc, dtype=float))
-    # pi K'/K with K = K1(k), K' = K1(kc), each seeded with the other one's complement (two
-    # AGMs): neither is formed as 1 - something, so q = exp(-pi K'/K) is accurate for small kc.
-    big = np.asarray(complete_integral(k, kc=kc), dtype=float)
-    zero = k == 0.0
-    prime = np.asarray(complete_integral(kc, kc=np.where(zero, 1.0, k)), dtype=float)
-    exponent = np.full(k.shape, np.inf)
-    np.divide(math.pi * prime, big, out=exponent, where=~zero & np.isfinite(big))
-    exponent[~np.isfinite(big)] = 0.0  # k = 1: K = inf, q = 1
-    root = np.array(np.exp(-0.5 * exponent), dtype=float)
-    # For small k, pi K'/K ~ log(16/k^2) is large and its rounding would cost q a relative error
-    # of up to 700 eps. There, q = e + 2e^5 + 15e^9 + 150e^13 + ... (A&S 17.3.21) with
-    # e = (1 - sqrt(kc)) / (2 (1 + sqrt(kc))) = k^2 / (2 (1 + kc) (1 + sqrt(kc))^2), free of
-    # cancellation.
-    small = (k < 0.5) & ~zero
-    if np.any(small):
-        ks, kcs = k[small], kc[small]
-        scale = np.sqrt(2.0 * (1.0 + kcs)) * (1.0 + np.sqrt(kcs))
-        eps4 = (ks / scale) ** 8  # e <= 0.017 here, so e^17 is below rounding
-        root[small] = ks / scale * np.sqrt(1.0 + eps4 * (2.0 + eps4 * (15.0 + 150.0 * eps4)))
-    return root
+    return k, kc
 
 
 def nome(k: npt.ArrayLike, kc: npt.ArrayLike | None = None) -> FloatOrArray:
@@ -280,11 +280,12 @@ def nome(k: npt.ArrayLike, kc: npt.ArrayLike | None = None) -> FloatOrArray:
     :math:`K_1(k_c) = \pi/(2\,\mathrm{AGM}(1, k))`
     (DLMF 19.8.5), each from :func:`~elliptic_pendulum.elliptic.complete_integral` seeded with the
     complement it needs, so no difference :math:`1 - k^2` is ever formed and q has a small
-    relative error for :math:`k_c` small. For k < 1/2 the exponent :math:`\pi K'/K` (up to 700)
-    would pass its rounding on to q, so there q comes from its series in
+    relative error for :math:`k_c` small. For k up to about 0.955 the exponent :math:`\pi K'/K`
+    (up to 700) would pass its rounding on to q, so there q comes from its series in
     :math:`\varepsilon = (1 - \sqrt{k_c})/(2(1 + \sqrt{k_c}))`,
     :math:`q = \varepsilon + 2\varepsilon^5 + 15\varepsilon^9 + 150\varepsilon^{13} + \dots`
-    (Abramowitz and Stegun 17.3.21), :math:`\varepsilon` formed without cancellation.
+    (Abramowitz and Stegun 17.3.21, to :math:`\varepsilon^{33}`), :math:`\varepsilon`
+    formed without cancellation: q to a few ulp for every k.
 
     Examples
     --------
@@ -296,10 +297,8 @@ def nome(k: npt.ArrayLike, kc: npt.ArrayLike | None = None) -> FloatOrArray:
     >>> abs(nome(math.sqrt(0.5)) - math.exp(-math.pi)) < 1e-16
     True
     """
-    # For k below 1e-154, q ~ k^2/16 is below the doubles: 0 to rounding, without a warning.
-    with np.errstate(under="ignore"):
-        root, k = _root_nome(k, kc)
-        return scalar_or_array(root * root, k)
+    k, kc = _checked_pair(k, kc)
+    return scalar_or_array(nome_from_pair(k, kc), k)
 
 
 def fourier_coefficients(theta0: npt.ArrayLike, n: int) -> npt.NDArray[np.float64]:
@@ -360,7 +359,7 @@ def fourier_coefficients(theta0: npt.ArrayLike, n: int) -> npt.NDArray[np.float6
         half = 0.5 * theta0
         # k = sin(theta0/2) and kc = cos(theta0/2) both as computed, each to full precision:
         # recomputing k from kc (which rounds to 1 below theta0 ~ 2e-8) lost every digit of q.
-        root = _root_nome_pair(np.sin(half), np.cos(half))
+        root = root_nome_from_pair(np.sin(half), np.cos(half))
         # q^(j + 1/2) as a power of sqrt(q): representable even where q itself would underflow.
         power = root[..., None] ** odd
         return 8.0 * power / (odd * (1.0 + power * power))

@@ -16,6 +16,7 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
+from .._validation import refuse_masked
 from ..elliptic import am, complete_integral, incomplete_integral, inverse_integral, jacobi
 from ..extension import periodic_extension, staircase_extension
 from ._base import legend_below, new_axes, place_legend, readable
@@ -28,6 +29,7 @@ _axes = new_axes
 
 def plot_jacobi(k: float, u: npt.ArrayLike, ax: Any = None, kc: float | None = None) -> Any:
     """Plot sn, cn and dn over the given u (several periods), modulus k (or kc)."""
+    refuse_masked(u, "u")
     ax = _axes(ax)
     u = np.asarray(u, dtype=float)
     for name, values in zip(("sn", "cn", "dn"), jacobi(u, k, kc=kc), strict=True):
@@ -71,6 +73,7 @@ def plot_amplitude(k: float, u: npt.ArrayLike, ax: Any = None) -> Any:
 
     The linear part is τu with τ = π/(2K1) (45); the remainder am(u) - τu has period 2K1.
     """
+    refuse_masked(u, "u")
     ax = _axes(ax)
     u = np.asarray(u, dtype=float)
     tau = math.pi / (2 * complete_integral(k))

@@ -16,6 +16,7 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
+from .._validation import refuse_masked
 from ..motion import solve
 from ..periods.approximations import ratio_approximations
 from ..periods.period import agm_period, crossing_angle, period, period_ratio
@@ -78,6 +79,7 @@ def plot_period_ratio(ax: Any = None, crossings: Sequence[float] = (2.0, 3.0, 4.
     near = theta0 > math.pi / 3  # the asymptote means nothing near theta0 = 0
     ax.plot(deg[near], 2 / math.pi * np.log(4 / np.cos(theta0[near] / 2)), "--", color="C3",
             label=r"$(2/\pi)\,\ln(4/\cos(\theta_0/2))$")
+    refuse_masked(crossings, "crossings")
     values = np.asarray(crossings, dtype=float)
     angles = np.degrees(crossing_angle(values))
     for v, a in zip(values, angles, strict=True):
@@ -142,6 +144,7 @@ def plot_approximation_error(ax: Any = None, amplitudes: npt.ArrayLike | None = 
     if amplitudes is None:
         degrees = np.concatenate([np.linspace(1, 170, 300), 180 - np.geomspace(10, 1e-3, 200)[1:]])
         amplitudes = np.radians(degrees)
+    refuse_masked(amplitudes, "amplitudes")
     x = np.asarray(amplitudes, dtype=float)
     if x.ndim != 1 or x.size == 0 or np.any((x <= 0) | (x >= math.pi)):
         raise ValueError("amplitudes must be a non-empty 1-d array of radians in (0, pi)")
@@ -218,6 +221,7 @@ def plot_harmonics(amplitudes_deg: Sequence[float], n: int = 12, axes: Any = Non
     n, samples = int(n), int(samples)
     if not 1 <= n <= samples // 4:
         raise ValueError(f"n must be in [1, samples/4] = [1, {samples // 4}], got {n}")
+    refuse_masked(amplitudes_deg, "amplitudes_deg")
     degrees = [float(d) for d in amplitudes_deg]
     if not degrees or any(not 0 < d < 180 for d in degrees):
         raise ValueError(f"amplitudes_deg must be degrees in (0, 180), got {amplitudes_deg!r}")

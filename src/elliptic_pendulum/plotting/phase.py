@@ -13,6 +13,7 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
+from .._validation import refuse_masked
 from ..motion import Motion, solve
 from ..numerics import integrate
 from ._base import layout, legend_below, new_axes, place_legend, readable, text_size
@@ -346,6 +347,7 @@ def plot_motion(motions: Motion | Sequence[Motion], t: npt.ArrayLike, axes: Any 
     if axes is None:
         import matplotlib.pyplot as plt
         _, axes = plt.subplots(2, 1, figsize=(7, 5), sharex=True, layout="constrained")
+    refuse_masked(t, "t")
     t = np.asarray(t, dtype=float)
     dots = t[:: max(1, len(t) // 40)]
     for i, m in enumerate(motions):

@@ -15,6 +15,7 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
+from .._validation import refuse_masked
 from ..driven.continuation import ResponseCurve
 from ..driven.resonance import backbone_frequency, duffing_backbone
 from ._base import new_axes, place_legend, readable
@@ -83,6 +84,7 @@ def plot_backbone(omega0: float = 1.0, ax: Any = None, against: str = "amplitude
     """
     if against not in ("amplitude", "energy"):
         raise ValueError(f'against must be "amplitude" or "energy", got {against!r}')
+    refuse_masked(points, "points")
     w0 = float(omega0)
     ax = new_axes(ax, figsize=(4.5, 3.8))
     A = np.linspace(0.0, math.pi * (1 - 1e-9), 800)
@@ -174,6 +176,7 @@ def plot_response(curve: ResponseCurve, ax: Any = None, *, color: str = "C0",
     2
     >>> import matplotlib.pyplot as plt; plt.close("all")
     """
+    refuse_masked(points, "points")
     ax = new_axes(ax, figsize=(8, 4.6))
     w0 = float(omega0)
     omega, amp, st = curve.frequency, curve.amplitude, curve.stable
@@ -254,6 +257,8 @@ def plot_sweep(curve: ResponseCurve, up: tuple[npt.ArrayLike, npt.ArrayLike],
     [1.8, 1.9]
     >>> import matplotlib.pyplot as plt; plt.close("all")
     """
+    refuse_masked(up, "up")
+    refuse_masked(down, "down")
     ax = new_axes(ax, figsize=(8, 4.4))
     omega, amp, st = curve.frequency, curve.amplitude, curve.stable
     for i in range(len(omega) - 1):
