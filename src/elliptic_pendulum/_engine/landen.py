@@ -4,9 +4,9 @@ Three pieces, each chosen for the separatrix, where k rounds to 1.0 and only
 the complementary modulus kc carries information:
 
 1. The arithmetic-geometric mean M(1, kc), seeded with kc (never with
-   1 - k**2), once in double precision for the descending Landen sequence and
-   once in double-double arithmetic for the quarter period K = pi / (2 M), so
-   that K is known to about 1e-32 relative.
+   1 - k**2), in double-double arithmetic: the quarter period K = pi / (2 M)
+   to about 1e-32 relative, and the descending Landen sequence (its levels
+   a_n and ratios b_n / a_n, rounded to double).
 2. Quarter-period reduction u = n K + v, |v| <= K/2, with K split into three
    parts (Cody and Waite): n K_hi and n K_mid are exact, so v keeps its
    digits even after thousands of periods.
@@ -55,8 +55,8 @@ class Constants(NamedTuple):
     k_mid: Any
     k_lo: Any
     scale: Any  # pi / (2 K) = M(1, kc)
-    mu: tuple          # the AGM sequences a_0 = 1, ..., a_N and b_0 = kc, ..., b_N
-    nu: tuple
+    mu: tuple   # the AGM sequence a_0 = 1, ..., a_N (a_N: see `_piece`)
+    rho: tuple  # b_0 / a_0 = kc, ..., b_N / a_N = 1 (the last level is circular)
 
 
 # An element's AGM stops where a - b <= 1e-8 a: there r = (a - b)/(a + b) <= 5e-9, and
@@ -88,9 +88,9 @@ def _constants(kc: Any, kc_lo: Any = 0.0) -> Constants:
     # Repeating an element's last level (where b = a) is an exact identity of the
     # recurrence in `core`, so pieces that converged in fewer steps can share one length.
     mu = [join(column) for column in zip(*(pad(c.mu, levels) for c in parts), strict=True)]
-    nu = [join(column) for column in zip(*(pad(c.nu, levels) for c in parts), strict=True)]
+    rho = [join(column) for column in zip(*(pad(c.rho, levels) for c in parts), strict=True)]
     return Constants._make([*(join([c[j] for c in parts]) for j in range(6)), tuple(mu),
-                            tuple(nu)])
+                            tuple(rho)])
 
 
 def pad(levels: tuple, n: int) -> tuple:
@@ -102,23 +102,31 @@ def _piece(kc: Any, kc_lo: Any) -> Constants:
     """Compute :func:`_constants` of one piece: one double-double AGM serves K and `core`.
 
     The AGM M(1, kc + kc_lo) runs in double-double arithmetic, seeded with kc (never with
-    1 - k**2), for K = pi / (2 M) to about 1e-32 relative, and its levels rounded to double
-    (half an ulp each, which keeps `core` within a few ulp) are the descending Landen
-    sequences a_n (``mu``) and b_n (``nu``). The recurrence in `core` starts from the last
-    level as if it were circular, which is off by that level's k_n^2 ~ 4 (a_n - b_n) /
-    (a_n + b_n): an element stops where a - b <= 1e-8 a, and its next level, one step on
-    (k^2 below 2.5e-17), is made circular, b = a; so are all levels after it, which makes the
-    extra steps of the recurrence exact identities (d = 1). An element gets the same bits
-    alone or beside a slower modulus (no dependence on the batch).
+    1 - k**2), for K = pi / (2 M) to about 1e-32 relative; its levels give the descending
+    Landen sequence a_n (``mu``, rounded to double) and the ratios b_n / a_n (``rho``, each
+    rounded once from the double-double quotient), and `core` takes d = rho + (1 - rho) s,
+    a sum of two positive terms, where GSL has (r + b_n) / (r + a_n) (measured: cn and dn
+    just above k = 1 from 14 ulp to 8). The recurrence starts from the last level as if it
+    were circular, which is off by that level's k_n^2 ~ 4 (a_n - b_n) / (a_n + b_n): an
+    element stops where a - b <= 1e-8 a, and its next level, one step on (k^2 below
+    2.5e-17), is made circular, rho = 1; so are all levels after it, which makes the extra
+    steps of the recurrence exact identities (d = 1). That last a_N, free to within k_N^2,
+    is chosen so that the recurrence's slope at v = 0 is one on the rounded levels,
+    M a_N rho_1 ... rho_(N-1) = kc in double-double (else the roundings of the levels add
+    up in sn(u) ~ u: 4.7 ulp at u = 3e-8 on GSL's rows). An element gets the same bits alone
+    or beside a slower modulus (no dependence on the batch).
     """
     top = kc == 0  # the separatrix: K = inf; run the AGM on a harmless stand-in
     kc_lo = np.where(top, 0.0, kc_lo)
     kc = np.where(top, 1.0, kc)
     ah, al = np.ones_like(kc), np.zeros_like(kc)
     bh, bl = _fast_two_sum(kc, kc_lo)
-    mu, nu = [ah], [bh]
+    mu, rho, stops = [ah], [bh], []
     done = np.zeros(kc.shape, dtype=bool)
-    mh, ml, final = ah, al, ah
+    mh, ml = ah, al
+    # rho_1 ... rho_j in double-double (ph, pl), and its value where an element stopped (qh, ql)
+    ph, pl = np.ones_like(kc), np.zeros_like(kc)
+    qh, ql = ph, pl
     for _ in range(60):  # 12 steps at kc = 1e-300; the cap guards a bug
         dh, dl = _two_sum(ah, -bh)
         diff = dh + (dl + (al - bl))  # a - b >= 0
@@ -127,26 +135,31 @@ def _piece(kc: Any, kc_lo: Any) -> Constants:
         near = ~done & (diff <= _NEAR * ah)
         r = diff / sh
         nh, nl = _fast_two_sum(ch, cl - ch * (0.25 * r * r))  # M = c (1 - r^2/4)
-        mh, ml, final = np.where(near, nh, mh), np.where(near, nl, ml), np.where(near, ch, final)
+        mh, ml = np.where(near, nh, mh), np.where(near, nl, ml)
+        qh, ql = np.where(near, ph, qh), np.where(near, pl, ql)
         done = done | near
+        mu.append(ch)  # where done, the last level: a_N is set below
+        stops.append(done)
         if np.all(done):
-            mu.append(final)
-            nu.append(final)
+            rho.append(np.ones_like(kc))
             break
-        ph, pl = _dd.mul(ah, al, bh, bl)
-        bh, bl = _dd.sqrt(ph, pl, np.sqrt)
+        xh, xl = _dd.mul(ah, al, bh, bl)
+        bh, bl = _dd.sqrt(xh, xl, np.sqrt)
         ah, al = ch, cl
-        mu.append(np.where(done, final, ah))
-        nu.append(np.where(done, final, bh))
+        ratio = _dd.div(bh, bl, ah, al)[0]
+        ph, pl = _dd.mul(ph, pl, ratio, 0.0 * ratio)
+        rho.append(np.where(done, 1.0, ratio))
     else:
         raise RuntimeError("AGM did not converge")
+    last = _dd.div(kc, 0.0 * kc, *_dd.mul(mh, ml, qh, ql))[0]  # a_N = kc / (M rho_1 ...)
+    mu = [mu[0], *(np.where(stop, last, a) for a, stop in zip(mu[1:], stops, strict=True))]
     kh, kl = _dd.div(0.5 * _PI_HI + 0.0 * mh, 0.5 * _PI_LO + 0.0 * mh, mh, ml)
     k_hi = _chop(kh)
     k_mid = _chop(kh - k_hi + kl)
     k_lo = (kh - k_hi - k_mid) + kl
     return Constants(np.where(top, 0.0, kc), np.where(top, np.inf, kh + kl),
                      np.where(top, np.inf, k_hi), np.where(top, 0.0, k_mid),
-                     np.where(top, 0.0, k_lo), mh, tuple(mu), tuple(nu))
+                     np.where(top, 0.0, k_lo), mh, tuple(mu), tuple(rho))
 
 
 @lru_cache(maxsize=256)
@@ -154,7 +167,8 @@ def _constants_float(kc: float, kc_lo: float) -> Constants:
     """Compute :func:`_constants` of one modulus on Python floats (its twin: the same bits)."""
     ah, al = 1.0, 0.0
     bh, bl = _fast_two_sum(kc, kc_lo + 0.0 * kc)
-    mu, nu = [ah], [bh]
+    mu, rho = [ah], [bh]
+    ph, pl = 1.0, 0.0
     while True:
         dh, dl = _two_sum(ah, -bh)
         diff = dh + (dl + (al - bl))
@@ -163,19 +177,21 @@ def _constants_float(kc: float, kc_lo: float) -> Constants:
         if diff <= _NEAR * ah:
             r = diff / sh
             mh, ml = _fast_two_sum(ch, cl - ch * (0.25 * r * r))
-            mu.append(ch)
-            nu.append(ch)
+            mu.append(_dd.div(kc, 0.0 * kc, *_dd.mul(mh, ml, ph, pl))[0])
+            rho.append(1.0)
             break
-        ph, pl = _dd.mul(ah, al, bh, bl)
-        bh, bl = _dd.sqrt(ph, pl, math.sqrt)
+        xh, xl = _dd.mul(ah, al, bh, bl)
+        bh, bl = _dd.sqrt(xh, xl, math.sqrt)
         ah, al = ch, cl
+        ratio = _dd.div(bh, bl, ah, al)[0]
+        ph, pl = _dd.mul(ph, pl, ratio, 0.0 * ratio)
         mu.append(ah)
-        nu.append(bh)
+        rho.append(ratio)
     kh, kl = _dd.div(0.5 * _PI_HI + 0.0 * mh, 0.5 * _PI_LO + 0.0 * mh, mh, ml)
     k_hi = _dd.split(kh)[0]
     k_mid = _dd.split(kh - k_hi + kl)[0]
     k_lo = (kh - k_hi - k_mid) + kl
-    return Constants(kc, kh + kl, k_hi, k_mid, k_lo, mh, tuple(mu), tuple(nu))
+    return Constants(kc, kh + kl, k_hi, k_mid, k_lo, mh, tuple(mu), tuple(rho))
 
 
 @lru_cache(maxsize=256)
@@ -246,13 +262,13 @@ def core(v, c: Constants):
     divides positive numbers or adds numbers of one sign.
     """
     t = np.tan(v * c.scale)
-    mu, nu = c.mu, c.nu
+    mu, rho = c.mu, c.rho
     cc = mu[-1] * t
     d = 1.0
     for n in range(len(mu) - 2, -1, -1):
         r = cc * cc / mu[n + 1]
         cc = d * cc
-        d = (r + nu[n]) / (r + mu[n])
+        d = rho[n] + (1.0 - rho[n]) * (r / (r + mu[n]))  # (r + b_n) / (r + a_n)
     # Here cc = kc * sc(v) and d = kc / dn(v) (GSL's first branch).
     dn = c.kc / d
     cn = dn / np.hypot(1.0, cc)
@@ -325,13 +341,13 @@ def evaluate_float(u, c, u_lo=0.0, amplitude=False, name="u", quarters=0.0):
         sech_v = _f(sech, v)
         s, cn_v, dn_v, ratio = _f(np.tanh, v), sech_v, sech_v, c.kc * _f(np.sinh, v)
     else:
-        mu, nu = c.mu, c.nu
+        mu, rho = c.mu, c.rho
         cc = mu[-1] * _f(np.tan, v * c.scale)
         d = 1.0
         for i in range(len(mu) - 2, -1, -1):
             r = cc * cc / mu[i + 1]
             cc = d * cc
-            d = (r + nu[i]) / (r + mu[i])
+            d = rho[i] + (1.0 - rho[i]) * (r / (r + mu[i]))
         dn_v = c.kc / d
         cn_v = dn_v / _f(np.hypot, 1.0, cc)
         s = cn_v * cc / c.kc
