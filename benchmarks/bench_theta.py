@@ -7,7 +7,8 @@ scipy.special.ellipj call of at most 1.5 (goal 1.0).
 
     python benchmarks/bench_theta.py [--points 1000000] [--repeats 5]
 
-It first prints the engine's ratios (bench_engine.py: an ensemble of 1e5 states,
+It first prints the engine's ratios (bench_engine.py: many moduli against scipy.special
+and mpmath, an ensemble of 1e5 states,
 one call on one number, the memory of theta(t)), so that `make bench` gives them all in one run.
 """
 
@@ -142,6 +143,7 @@ def main():
     engine = argparse.Namespace(states=100_000, times=10, points=10_000_000,
                                 repeats=args.repeats)
     print("\n== the engine ==")
+    bench_engine.moduli(argparse.Namespace(repeats=3), np.random.default_rng(20260101))
     bench_engine.ensemble(engine, np.random.default_rng(20261201))
     bench_engine.scalars(engine)
     bench_engine.memory(engine)

@@ -244,8 +244,10 @@ def test_landen_levels_end_circular():
 
 def test_near_one_from_above_boost_like_rows():
     # Rows in the style of Boost's jacobi_near_1 table (k = 1 + small, u ~ +-4): cn and dn
-    # were 15 ulp off at worst; the circular last level brings them to 12 (mean 1.8 ulp). The
-    # rest is the rounding of the double-precision recurrence. Reference: mpmath, 50 digits.
+    # were 15 ulp off at worst; the circular last level brought them to 12 (mean 1.7 ulp), and
+    # the recurrence's d = rho + (1 - rho) s (a sum of positive terms, in place of
+    # (r + b_n) / (r + a_n)) to 8 (mean 1.5 ulp). The rest is the rounding of the
+    # double-precision recurrence at kc(1/k) ~ 1e-3. Reference: mpmath, 50 digits.
     ks = [1.000000476837158203125, 1.000003337860107421875, 1.000029087066650390625,
           1.0000996589660644531250, 1.00026798248291015625, 1.00124835968017578125]
     us = np.array([-4.02459716796875, -3.73013210296630859375]
@@ -254,5 +256,5 @@ def test_near_one_from_above_boost_like_rows():
         s, c, d = ep.jacobi(us, k)
         for i, u in enumerate(us):
             exact = _mp_jacobi(u, k)
-            assert _ulps(s[i], exact[0]) <= 5 and _ulps(c[i], exact[1]) <= 12
-            assert _ulps(d[i], exact[2]) <= 12, (u, k)
+            assert _ulps(s[i], exact[0]) <= 5 and _ulps(c[i], exact[1]) <= 8
+            assert _ulps(d[i], exact[2]) <= 8, (u, k)

@@ -52,7 +52,7 @@ _N = len(Params._fields) - 1  # the per-state arrays before the Landen constants
 
 def _pieces(p: Params) -> list[Any]:
     c = p.landen
-    return [*p[:_N], c.kc, c.quarter, c.k_hi, c.k_mid, c.k_lo, c.scale, *c.mu, *c.nu]
+    return [*p[:_N], c.kc, c.quarter, c.k_hi, c.k_mid, c.k_lo, c.scale, *c.mu, *c.rho]
 
 
 def _unpieces(pieces: list[Any], levels: int) -> Params:
@@ -232,7 +232,7 @@ def _direct(p: Params, t, tau, redo, theta):
 
     c = p.landen
     landen = _landen.Constants._make([*(pick(x) for x in c[:6]), tuple(pick(x) for x in c.mu),
-                                      tuple(pick(x) for x in c.nu)])
+                                      tuple(pick(x) for x in c.rho)])
     u, u_lo = _two_sum(pick(tau[0]), pick(p.rem))
     u_lo = u_lo + pick(tau[1] + p.rate_lo * t)
     sn, _, dn, (quarters, rest) = _landen.evaluate(u, landen, u_lo, amplitude="split",

@@ -135,9 +135,9 @@ def _solve(th, v, w0):
     c = [join([p.landen[j] for _, p in parts]) for j in range(6)]
     mu = [join(column) for column in zip(*(_pad(p.landen.mu, levels) for _, p in parts),
                                          strict=True)]
-    nu = [join(column) for column in zip(*(_pad(p.landen.nu, levels) for _, p in parts),
+    rho = [join(column) for column in zip(*(_pad(p.landen.rho, levels) for _, p in parts),
                                          strict=True)]
-    return public, _flow.Params(*scalars, _landen.Constants(*c, tuple(mu), tuple(nu)))
+    return public, _flow.Params(*scalars, _landen.Constants(*c, tuple(mu), tuple(rho)))
 
 
 def solve_float(th: float, v: float, w0: float):
@@ -203,7 +203,7 @@ def plain(values: list, p: _flow.Params) -> list:
     c = p.landen
     landen = _landen.Constants._make([*(float(x) for x in c[:6]),
                                       tuple(float(x) for x in c.mu),
-                                      tuple(float(x) for x in c.nu)])
+                                      tuple(float(x) for x in c.rho)])
     return [*public, _flow.Params._make([int(p.code), bool(p.still),
                                          *(float(x) for x in p[2:-1]), landen])]
 
@@ -216,6 +216,6 @@ def pick(values: tuple, p: _flow.Params, shape: tuple, index) -> list:
 
     c = p.landen
     landen = _landen.Constants._make([*(one(x) for x in c[:6]), tuple(one(x) for x in c.mu),
-                                      tuple(one(x) for x in c.nu)])
+                                      tuple(one(x) for x in c.rho)])
     return plain([one(x) for x in values], _flow.Params._make([*(one(x) for x in p[:-1]),
                                                                landen]))

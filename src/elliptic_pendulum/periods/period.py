@@ -18,6 +18,7 @@ import math
 import numpy as np
 import numpy.typing as npt
 
+from .._engine import quarter as _quarter
 from .._engine.landen import _PI_LO
 from .._validation import FloatOrArray, positive_scalar, real_array, scalar_or_array
 from ..elliptic import complete_integral
@@ -129,9 +130,11 @@ def period_ratio(theta0: npt.ArrayLike) -> FloatOrArray:
     amplitudes = _amplitudes(theta0)
     # A subnormal amplitude (1e-320) underflows in theta0/2 and its sine; R - 1 ~ theta0^2/16
     # is far below rounding there, so the underflow is harmless and not worth a warning.
+    # Only kc = cos(theta0/2) is needed (libm's cosine keeps its relative digits up to the
+    # top), and K straight from the engine's double-precision path (complete_integral's).
     with np.errstate(under="ignore"):
-        half = 0.5 * amplitudes
-        k_integral = complete_integral(np.sin(half), kc=np.cos(half))
+        kc = np.cos(0.5 * amplitudes)
+        k_integral = _quarter.complete(kc * kc, kc)
     # Dividing by the double pi/2 (not multiplying by 2/pi) gives R(0) == 1.0 exactly.
     return scalar_or_array(np.asarray(k_integral) / (0.5 * math.pi), amplitudes)
 
