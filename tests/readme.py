@@ -112,7 +112,12 @@ def run(command: str, cwd: Path) -> Run:
         j = starts[n + 1] if n + 1 < len(starts) else len(lines)
         t_end = lines[j][0] if j < len(lines) else end
         last = n + 1 == len(starts)
-        parts.append(Part(lines[i][1], "".join(text for _, text in lines[i:j]),
+        # A recipe line continued with a backslash is echoed on several lines: one command.
+        k, command = i, lines[i][1]
+        while command.rstrip().endswith("\\") and k + 1 < j:
+            k += 1
+            command = command.rstrip()[:-1] + " " + lines[k][1].strip()
+        parts.append(Part(" ".join(command.split()), "".join(text for _, text in lines[i:j]),
                           t_end - lines[i][0], returncode if last else 0))
     return Run(command, returncode, "".join(text for _, text in lines), end - start, parts)
 

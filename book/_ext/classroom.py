@@ -130,6 +130,13 @@ def _download_buttons(
 ) -> None:
     if app.builder.name != "html":
         return
+    if not app.config.html_copy_source:
+        # The theme offers the page's source whether or not Sphinx copied it: a site that
+        # copies none (the student site) offers none.
+        for group in context.get("header_buttons", []):
+            if group.get("label") == "download-buttons":
+                group["buttons"] = [b for b in group["buttons"] if b.get("label") not in (
+                    "download-source-button", "download-notebook-button")]
     files = export_notebooks.notebook_files(app.env)
     if pagename not in files:
         return

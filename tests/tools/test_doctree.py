@@ -184,3 +184,19 @@ def test_a_code_cell_inside_a_box_is_refused() -> None:
     box = nodes.note("", cell("x = 1", 0))
     with pytest.raises(ValueError, match="code cell inside"):
         doctree.cells(nodes.container("", box), page())
+
+
+def test_a_toctree_is_a_nested_list_of_links_to_the_notebooks() -> None:
+    # Sphinx resolves a toctree into a paragraph that holds its caption and a nested list.
+    from sphinx import addnodes
+
+    def item(text: str, uri: str, *sub: nodes.Node) -> nodes.list_item:
+        return nodes.list_item("", addnodes.compact_paragraph(
+            "", "", nodes.reference("", text, refuri=uri)), *sub)
+
+    toc = nodes.compound("", addnodes.compact_paragraph(
+        "", "", nodes.title("", "Contents"), nodes.bullet_list("", item(
+            "Zeta first", "zeta.html", nodes.bullet_list("", item("Part", "zeta.html#part"))),
+            item("Alpha", "alpha.html"))), classes=["toctree-wrapper"])
+    assert markdown(toc) == ("**Contents**\n\n- [Zeta first](01-zeta.ipynb)\n"
+                             "  - [Part](01-zeta.ipynb#part)\n- [Alpha](02-alpha.ipynb)")

@@ -20,7 +20,7 @@ def test_a_run_is_cut_into_the_recipe_lines_it_echoes(tmp_path) -> None:
     # A Makefile of two recipe lines in the form of the project's: each line's output is
     # its own, and the exit code belongs to the line that failed.
     (tmp_path / "Makefile").write_text(
-        "all:\n\tmkdir -p out\n\tcp Makefile out/ && echo copied\n\ttest -f missing\n")
+        "all:\n\tmkdir -p out\n\tcp Makefile out/ && echo \\\n\t  copied\n\ttest -f missing\n")
     got = run("make all", tmp_path)
     assert isinstance(got, Run) and got.returncode != 0
     assert [p.line.split()[0] for p in got.parts] == ["mkdir", "cp", "test"]

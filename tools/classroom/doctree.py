@@ -133,6 +133,9 @@ class Writer:
             self.code(node)
         elif isinstance(node, nodes.section):
             self.section(node)
+        elif isinstance(node, nodes.paragraph) and any(
+                isinstance(c, (nodes.title, nodes.Sequential)) for c in node.children):
+            self.body(node)  # Sphinx's toctree: a "paragraph" that holds its caption and list
         elif isinstance(node, (nodes.paragraph, nodes.rubric)):
             text = _anchors(node) + self.inline(node)
             self.blocks.append(f"**{text}**" if isinstance(node, nodes.rubric) else text)
@@ -227,7 +230,8 @@ class Writer:
         start = int(node.get("start", 1))
         for i, item in enumerate(node.children):
             marker = f"{start + i}." if isinstance(node, nodes.enumerated_list) else "-"
-            text = self.render(list(item.children))
+            # A nested list follows its item's text without a blank line (a tight list).
+            text = re.sub(r"\n\n(?=- |\d+\. )", "\n", self.render(list(item.children)))
             pad = " " * (len(marker) + 1)
             lines = text.splitlines() or [""]
             items.append(f"{marker} {lines[0]}" + "".join(

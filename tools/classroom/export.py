@@ -70,7 +70,8 @@ def reading_order(env: Any, root: str = "index") -> list[str]:
             visit(child)
 
     visit(root)
-    return [d for d in order if "kernelspec" in env.metadata.get(d, {})]
+    # A page with a jupytext header (and so a kernel): myst-nb executes it as a notebook.
+    return [d for d in order if {"jupytext", "kernelspec"} & set(env.metadata.get(d, {}))]
 
 
 def notebook_files(env: Any) -> dict[str, str]:
