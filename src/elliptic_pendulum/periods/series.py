@@ -9,8 +9,9 @@ alpha) with :math:`k_c = \sqrt{1 - k^2}` passed alongside where k is close to 1.
   :func:`period_series` sums them. The series converges for :math:`|\theta_0| < \pi` only:
   :math:`R` has a logarithmic singularity at :math:`\theta_0 = \pm\pi` (the separatrix), where
   :math:`R \approx -(2/\pi)\log(1 - \theta_0^2/\pi^2)`, so :math:`n\,\pi^{2n} a_n \to 2/\pi`.
-* :func:`nome` is Jacobi's :math:`q = e^{-\pi K'/K}`, from its series in k (and two AGMs near k = 1) so that it keeps its
-  relative accuracy for k small (:math:`q \approx k^2/16`) and for :math:`k_c` small.
+* :func:`nome` is Jacobi's :math:`q = e^{-\pi K'/K}`, from its series in k (from two AGMs
+  near k = 1) so that it keeps its relative accuracy for k small (:math:`q \approx k^2/16`)
+  and for :math:`k_c` small.
 * :func:`fourier_coefficients` gives the sine series of a swing (DLMF 22.11.1 with
   :math:`\theta/2 = \arcsin(k\,\mathrm{sn})`, integrated term by term):
 
