@@ -36,6 +36,8 @@ extensions = [
     "checks_scan",
     # book/_ext/site_links.py: the home page's links to the site's editions and downloads.
     "site_links",
+    # book/_ext/numref_cache.py: {numref} without unpickling its target's page each time.
+    "numref_cache",
     "offline",
     # book/_ext/a11y.py: WCAG 2.1 AA where docutils and myst-nb write otherwise (citations,
     # the code cells' toggles); after myst_nb, whose toggle it rewrites.
