@@ -36,6 +36,8 @@ extensions = [
     "checks_scan",
     # book/_ext/site_links.py: the home page's links to the site's editions and downloads.
     "site_links",
+    # book/_ext/checkmarks.py: each check cell as one folded mark in the margin.
+    "checkmarks",
     # book/_ext/numref_cache.py: {numref} without unpickling its target's page each time.
     "numref_cache",
     "offline",

@@ -17,10 +17,13 @@ x = sp.Symbol("x", real=True)
 def test_identity_passes_and_names_its_mutant():
     v = verify.identity(identity("eq26"))
     assert v.claim == "(26)" and v.kind == "sympy identity"
-    assert "8K_1" in v.details and v.display  # the statement is shown above the verdict
+    assert "8K_1" in v.details
     assert str(v).startswith("✔ (26) holds for $0 < \\alpha < 1$")
     assert "<details>" in v._repr_markdown_()  # the details one click away
-    assert v._repr_markdown_().startswith("$$\n")
+    # The reader has just read the equation: it is not displayed again, unless asked for.
+    assert not v.display and v._repr_markdown_().startswith("✔ **(26)**")
+    shown = verify.identity(identity("eq26"), show=True)
+    assert shown.display and shown._repr_markdown_().startswith("$$\n")
 
 
 def test_identity_fails_when_sympy_does_not_confirm_it():

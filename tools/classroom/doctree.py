@@ -131,6 +131,10 @@ class Writer:
         assert isinstance(node, nodes.Element)
         if isinstance(node, nodes.container) and node.get("nb_element") == CELL:
             self.code(node)
+        elif "check-mark" in node.get("classes", []):
+            self.check(node)
+        elif "check-kept" in node.get("classes", []):
+            self.captions(node)
         elif isinstance(node, nodes.section):
             self.section(node)
         elif isinstance(node, nodes.paragraph) and any(
@@ -191,21 +195,40 @@ class Writer:
                 self.block(child)
         self.depth -= 1
 
-    def code(self, node: nodes.container) -> None:
+    def code(self, node: nodes.container, hidden: bool = False) -> None:
         index = node.get("cell_index")
         if isinstance(index, int) and index < len(self.page.sources):
             text = self.page.sources[index]
         else:
-            source = next((c for c in node.children if c.get("nb_element") == SOURCE), None)
+            source = next(iter(node.findall(lambda n: isinstance(n, nodes.Element)
+                                            and n.get("nb_element") == SOURCE)), None)
             text = source.astext() if source is not None else ""
         metadata = dict(node.get("cell_metadata") or {})
+        if hidden:  # JupyterLab and Notebook 7 show a collapsed source as one line
+            metadata["jupyter"] = {**metadata.get("jupyter", {}), "source_hidden": True}
         self.add([self.page.code_cell(text, metadata)])
-        # The figure a cell draws: its caption, numbered, in a Markdown cell under it.
+        self.captions(node)
+
+    def captions(self, node: nodes.Element) -> None:
+        """The figure a cell draws: its caption, numbered, in a Markdown cell under it."""
         for figure in node.findall(nodes.figure):
             caption = next(iter(figure.findall(nodes.caption)), None)
             if caption is not None:
                 self.blocks.append(self.caption(figure, caption, bold=True))
         self.flush()
+
+    def check(self, node: nodes.Element) -> None:
+        """A check (book/_ext/checkmarks.py): its note folded, then its cell, source collapsed.
+
+        The verdicts are the cell's own outputs when the reader runs it, one line each.
+        """
+        notes = [c for c in node.children if "check-note" in c.get("classes", [])]
+        if notes:
+            text = "\n\n".join(self.render(list(n.children)) for n in notes)
+            self.blocks.append(self.page.words.check.format(note=text))
+        for cell in node.findall(lambda n: isinstance(n, nodes.container)
+                                 and n.get("nb_element") == CELL):
+            self.code(cell, hidden=True)
 
     def caption(self, figure: nodes.Element, caption: nodes.Element, bold: bool) -> str:
         w = self.page.words

@@ -51,6 +51,8 @@ class Words:
     placeholder: str = "{name} = ...  # replace ... by your result"
     hint: str = ("<details><summary><b>Hint</b> for the parts to prove or explain</summary>"
                  "\n\n{hint}\n\n</details>")
+    # A check's note, folded above its cell (book/_ext/checkmarks.py: the page's mark).
+    check: str = "<details><summary>✔ What the next cell checks</summary>\n\n{note}\n\n</details>"
     answer: str = ("**Your answer** to the parts to prove or explain (double-click to write "
                    "here).")
 
@@ -108,6 +110,7 @@ JAPANESE = Words(
     result_name="`{name}`（{what}）",
     result_separator="、",
     placeholder="{name} = ...  # ... をあなたの結果に置き換える",
+    check="<details><summary>✔ 次のセルが検証すること</summary>\n\n{note}\n\n</details>",
     hint=("<details><summary><b>ヒント</b>（証明・説明を求める部分）</summary>"
           "\n\n{hint}\n\n</details>"),
     answer="**あなたの答え**（証明・説明を求める部分。ダブルクリックしてここに書く）",

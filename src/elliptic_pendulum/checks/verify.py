@@ -1,8 +1,9 @@
 r"""Checks with a verdict a student reads at a glance, for the book's cells.
 
-A book page shows a derivation, then a cell whose input is folded (tag ``hide-input``) and whose
-output is the outcome of the check: one sentence that says what holds and how well, and, one
-click away (a ``<details>`` element), how it was checked::
+A book page shows a derivation, and beside it a check: a cell whose input is folded (tag
+``hide-input``), which the book writes as one mark in the margin (book/_ext/checkmarks.py).
+Its output is the outcome of the check: one sentence that says what holds and how well, and,
+one click away (a ``<details>`` element), how it was checked::
 
     ✔ (15) holds identically: sympy reduces the difference of its two sides to 0.
     ✔ (26) holds: max relative error 2.0e-16 over 20 swings.
@@ -114,7 +115,7 @@ def _fmt(x: float) -> str:
     return "0" if x == 0 else f"{x:.1e}" if abs(x) < 1e-3 or abs(x) >= 1e4 else f"{x:.2g}"
 
 
-def identity(ident: _Identity, *, show: bool = True) -> Verdict:
+def identity(ident: _Identity, *, show: bool = False) -> Verdict:
     r"""Assert that a sympy identity holds and that its mutant does not; return the verdict.
 
     A statement with a domain (``ident.where``) is also evaluated, its radicals as principal
@@ -129,7 +130,8 @@ def identity(ident: _Identity, *, show: bool = True) -> Verdict:
         The statement; ``ident.mutant_identity()`` (when ``ident.mutant`` is set) is the same
         statement with the mutated right-hand side.
     show : bool
-        Display the statement itself above the verdict.
+        Display the statement itself above the verdict (off by default: on a page the
+        verdict follows the equation the reader has just read).
 
     Raises
     ------
