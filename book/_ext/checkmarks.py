@@ -133,7 +133,7 @@ class CheckMarks(SphinxPostTransform):
     def mark(self, cell: nodes.Element, words: dict[str, str]) -> None:
         """Replace one check cell, and the notes just before it, by its mark."""
         parent = cell.parent
-        notes = []
+        notes: list[nodes.Node] = []
         previous = cell.previous_sibling()
         while previous is not None and _is_note(previous):
             notes.insert(0, previous)
