@@ -39,14 +39,25 @@ def heads(ax):
 def test_phase_portrait_arrows_show_the_clockwise_motion() -> None:
     ax = epp.phase_portrait()
     found = heads(ax)
-    # two on each of the 6 swings, one on each half of the separatrix and of 3 x 2 rotations
-    assert len(found) == 6 * 2 + 2 + 3 * 2
+    # one on each curve: the 6 swings, the separatrix's two branches, the 3 x 2 rotations
+    assert len(found) == 6 + 2 + 3 * 2
     for head in found:
         (x1, y1), (x0, y0) = head.xy, head.xyann
         # theta increases where theta' > 0 (the motion is clockwise): (9) with theta' = d theta/dt
         assert (x1 - x0) * y0 > 0, (head.xyann, head.xy)
         # the head sits on a curve of (9): c1 = theta'^2 - 2 cos theta is the same at both ends
         assert abs((y1**2 - 2 * math.cos(x1)) - (y0**2 - 2 * math.cos(x0))) < 0.05
+
+
+def test_phase_portrait_arrows_do_not_crowd() -> None:
+    # No two heads closer than 1/36 of the figure's width (25 px of 900): four heads side by
+    # side on nested swings, about 15 px apart, was the fault of the cover figure; the three
+    # rotations' heads, one above another on curves well apart, are 36 px apart.
+    ax = epp.phase_portrait()
+    at = np.array([ax.transData.transform(h.xy) for h in heads(ax)])
+    gaps = np.hypot(*(at[:, None, :] - at[None, :, :]).transpose(2, 0, 1))
+    np.fill_diagonal(gaps, np.inf)
+    assert gaps.min() > ax.figure.bbox.width / 36
 
 
 def test_phase_portrait_without_arrows_draws_none_and_says_none() -> None:

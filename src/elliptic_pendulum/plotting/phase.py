@@ -103,66 +103,114 @@ def _visible(th: np.ndarray, dth: np.ndarray, view: Any) -> np.ndarray:
     return (th >= x0) & (th <= x1) & (dth >= y0) & (dth <= y1)
 
 
-#: Where an arrowhead goes along the visible part of a curve (as a fraction of its theta range,
-#: where it moves right; 1 - that where it moves left): the first place clear of every label.
-_ALONG = (0.85, 0.75, 0.95, 0.65, 0.55, 0.45, 0.35, 0.25)
-
-
 def _same_curve(a: tuple, b: tuple) -> bool:
     """Whether two (shift, theta, ...) entries are copies of one curve, 2 pi k apart."""
     return len(a[1]) == len(b[1]) and bool(np.allclose(a[1] - a[0], b[1] - b[0]))
 
 
-def _arrowheads_in_view(ax: Any, drawn: dict, view: Any, labels: Sequence[Any] = ()) -> None:
-    """Draw one arrowhead on each half (theta' > 0, < 0) of the curves in view.
+def _curves(entries: list) -> list[list]:
+    """The entries grouped by curve (its copies 2 pi k apart), in the order drawn."""
+    groups: list[list] = []
+    for entry in entries:
+        for group in groups:
+            if _same_curve(group[0], entry):
+                group.append(entry)
+                break
+        else:
+            groups.append([entry])
+    return groups
 
-    On the copy nearest the centre of the view, on its visible part: 85 % of the way along
-    where it moves right, 15 % where it moves left, or the nearest place to that (see _ALONG)
-    where the head covers none of the ``labels`` as the figure is laid out; failing that, on
-    the next copy.
+
+# Offsets tried, in turn, from a head's chosen place when a label is in the way (radians of
+# the swing's phase angle, or fractions of the view's width).
+_NUDGES = (0.0, 0.25, -0.25, 0.5, -0.5, 0.75, -0.75, 1.0, -1.0)
+
+
+def _arrowheads_in_view(ax: Any, drawn: dict, view: Any, labels: Sequence[Any] = ()) -> None:
+    """Draw one arrowhead on each curve, where no two heads crowd each other.
+
+    Nested swings would take their heads side by side if all sat at one place: so swing i
+    goes on copy i mod 3 of those in view (the centre's, then its neighbours'), in the
+    upper right of its oval for even i and the lower left for odd i, which leaves two heads
+    per copy, three curves apart, on opposite sides. Each branch of the separatrix takes its
+    head on the central copy, upper left and lower right, between those of the swings; the
+    rotations above the axis near the view's left edge, those below near its right edge,
+    where no label is. A head that would cover a label moves along its curve (_NUDGES).
     """
     renderer = layout(ax)
-    pad = text_size(ax) * ax.figure.dpi / 72 * 0.2
+    # A head keeps half a letter's height from every label: touching, it reads as a sign.
+    pad = text_size(ax) * ax.figure.dpi / 72 * 0.5
     boxes = [t.get_window_extent(renderer).padded(pad) for t in labels]
-    centre = sum(view[0]) / 2
-    for regime in ("II", "III", "IV"):
-        if not drawn[regime]:
-            continue
-        copies = sorted({c[0] for c in drawn[regime]}, key=lambda s: (abs(s - centre), s))
-        for sign in (1, -1):
-            places = []  # (theta, theta', sample) in the order tried
-            for copy in copies:
-                for shift, th, dth, color in drawn[regime]:
-                    if shift != copy:
-                        continue
-                    idx = np.flatnonzero(_visible(th, dth, view) & (sign * dth > 0))
-                    if len(idx) < 2:
-                        continue
-                    lo, hi = th[idx].min(), th[idx].max()
-                    for along in _ALONG:
-                        frac = along if sign > 0 else 1 - along
-                        i = idx[np.argmin(np.abs(th[idx] - (lo + frac * (hi - lo))))]
-                        places.append((shift, th, dth, color, int(min(i, len(th) - 2))))
-            # every curve of the regime on the nearest copy with a free place for it
-            done: set[int] = set()
-            for shift, th, dth, color, i in places:
-                key = id(th)
-                if key in done:
-                    continue
-                head = _arrowhead(ax, th, dth, i, color)
-                head.update_positions(renderer)
-                extent = head.arrow_patch.get_window_extent(renderer)
-                if any(extent.overlaps(box) for box in boxes):
-                    head.remove()
-                    continue
-                # this curve has its head; so has its twin on every other copy
-                done.update(id(c[1]) for c in drawn[regime] if _same_curve(c, (shift, th)))
-            for shift, th, dth, color in drawn[regime]:  # no free place anywhere: the first
-                if id(th) not in done and shift == copies[0]:
-                    first = [p for p in places if p[1] is th]
-                    if first:
-                        _arrowhead(ax, th, dth, first[0][4], color)
-                        done.update(id(c[1]) for c in drawn[regime] if _same_curve(c, (shift, th)))
+    (x0, x1), (y0, y1) = view
+    centre, width = (x0 + x1) / 2, x1 - x0
+    # Heads stay off the frame: a head in a corner is half cut and reads as clutter.
+    inner = ((x0 + 0.06 * width, x1 - 0.06 * width),
+             (y0 + 0.06 * (y1 - y0), y1 - 0.06 * (y1 - y0)))
+
+    def put(th: np.ndarray, dth: np.ndarray, color: str, score: Any, near: float) -> bool:
+        # The visible sample nearest the chosen place (score 0), if within ``near`` of it,
+        # that covers no label.
+        seen = np.flatnonzero(_visible(th, dth, inner))[:-1]
+        if len(seen) == 0:
+            return False
+        for nudge in _NUDGES:
+            scores = score(seen, nudge)
+            if scores.min() > near:
+                continue
+            i = int(seen[np.argmin(scores)])
+            head = _arrowhead(ax, th, dth, i, color)
+            head.update_positions(renderer)
+            extent = head.arrow_patch.get_window_extent(renderer)
+            if not any(extent.overlaps(box) for box in boxes):
+                boxes.append(extent)
+                return True
+            head.remove()
+        return False
+
+    def copies_of(group: list) -> list:
+        # The copies with a part in view, the nearest the centre first.
+        shown = [e for e in group if np.any(_visible(e[1], e[2], view))]
+        return sorted(shown, key=lambda e: (abs(e[0] - centre), e[0]))
+
+    def along(th: np.ndarray, where: float) -> Any:
+        return lambda idx, n: np.abs(th[idx] - where - n * 0.1 * width)
+
+    # A close-up may show no part of a curve near its chosen place: then the swings take
+    # their heads at a turning point (where they cross the axis upright), the separatrix and
+    # the rotations near the view's middle.
+    odd_pi = math.pi * (2 * round((centre - math.pi) / (2 * math.pi)) + 1)
+    for i, group in enumerate(_curves(drawn["II"])):
+        shown = copies_of(group)
+        order = shown[i % 3:] + shown[:i % 3] if shown else []
+        targets = ((math.pi / 4, 0.0, math.pi) if i % 2 == 0
+                   else (-3 * math.pi / 4, math.pi, 0.0))
+        done = False
+        for target in targets:
+            for shift, th, dth, color in order:
+                x, y = th - shift, dth
+                phase = np.arctan2(y / np.max(np.abs(y)), x / np.max(np.abs(x)))
+                if put(th, dth, color, lambda idx, n, ph=phase, tg=target: np.abs(
+                        np.angle(np.exp(1j * (ph[idx] - tg - n)))), near=0.3):
+                    done = True
+                    break
+            if done:
+                break
+    for group in _curves(drawn["III"]):
+        for shift, th, dth, color in copies_of(group):
+            upper = np.mean(dth) > 0
+            places = (shift - math.pi / 2 if upper else shift + math.pi / 2,
+                      odd_pi - width / 4 if upper else odd_pi + width / 4)
+            if any(put(th, dth, color, along(th, w), near=0.05 * width) for w in places):
+                break
+    for group in _curves(drawn["IV"]):
+        for shift, th, dth, color in copies_of(group):
+            # Where the rotations lie farthest apart, at an odd multiple of pi: the upper ones
+            # left of the labels there, the lower ones right (none is labelled below).
+            upper = np.mean(dth) > 0
+            places = (odd_pi - 2 * math.pi if upper else odd_pi, odd_pi) if width > 4 * math.pi \
+                else (odd_pi,)
+            if any(put(th, dth, color, along(th, w), near=0.05 * width) for w in places):
+                break
 
 
 def plot_phase_portrait(omega0: float = 1.0, ax: Any = None,
@@ -210,12 +258,12 @@ def plot_phase_portrait(omega0: float = 1.0, ax: Any = None,
     >>> ax.get_xlabel()
     '$\\theta$'
 
-    Two arrowheads on each of the six swings, one on each half of the separatrix and of the
-    three rotations in each direction, all clockwise:
+    One arrowhead on each of the six swings, each branch of the separatrix and each of the
+    three rotations in either direction, all clockwise:
 
     >>> heads = [a for a in ax.texts if a.arrow_patch is not None]
     >>> len(heads)
-    20
+    14
     >>> all((a.xy[0] > a.xyann[0]) == (a.xy[1] > 0) for a in heads)
     True
     >>> close = plot_phase_portrait(xlim=(1.5, 4.8), ylim=(-1.2, 1.2), label=False)
