@@ -124,6 +124,24 @@ def test_code_cells_come_from_the_notebook_and_carry_their_figure_caption() -> N
     assert cells[3].source == "After."
 
 
+def test_a_check_is_its_note_folded_then_its_cell_collapsed() -> None:
+    # What book/_ext/checkmarks.py makes of a check cell and the {check} note before it.
+    note = nodes.container("", nodes.paragraph("", "A common slip is 2v/g."),
+                           classes=["check-note"])
+    mark = nodes.container("", note, cell("verify.fact(...)", 0, tags=["hide-input"]),
+                           classes=["check-mark", "margin"])
+    kept = nodes.container("", nodes.figure("", nodes.caption("", "A line."), ids=["fig-a"]),
+                           classes=["cell_output", "check-kept"])
+    cells = doctree.cells(nodes.section("", nodes.paragraph("", "Before."), mark, kept),
+                          page(sources=["verify.fact(...)"]))
+    assert [c.cell_type for c in cells] == ["markdown", "code", "markdown"]
+    assert cells[0].source == ("Before.\n\n<details><summary>✔ What the next cell checks"
+                               "</summary>\n\nA common slip is 2v/g.\n\n</details>")
+    assert cells[1].metadata["jupyter"] == {"source_hidden": True}
+    # The figure the check drew stays in the thread, with its caption.
+    assert cells[2].source == '<a id="fig-a"></a>\n\n**Fig. 3.** A line.'
+
+
 def exercise() -> exercise_enumerable_node:
     return exercise_enumerable_node(
         "", exercise_title("", "Exercise"), nodes.title("", "Exercise 2"),
