@@ -77,15 +77,23 @@ def _is_check(cell: nodes.Element) -> bool:
     return source is not None and "verify." in source.astext()
 
 
-def _claims(output: nodes.Element) -> list[str]:
-    """Return the claims of the verdicts in a cell's output: the bold text after each ✔."""
-    claims: list[str] = []
+def _claims(output: nodes.Element) -> list[tuple[str, bool]]:
+    """Return the claims of the verdicts in a cell's output: the bold text after each ✔.
+
+    Each comes with whether a summary can name it: a claim with a formula in it would show
+    its LaTeX there (a summary is plain text), and is counted instead.
+    """
+    claims: list[tuple[str, bool]] = []
     for para in output.findall(nodes.paragraph):
         first = para.children[0] if para.children else None
         if isinstance(first, nodes.Text) and first.astext().startswith("✔"):
             strong = next(iter(para.findall(nodes.strong)), None)
-            if strong is not None and strong.astext() not in claims:
-                claims.append(strong.astext())
+            if strong is None:
+                continue
+            claim = (" ".join(strong.astext().split()),
+                     not any(True for _ in strong.findall(nodes.math)))
+            if claim not in claims:
+                claims.append(claim)
     return claims
 
 
@@ -166,8 +174,8 @@ class CheckMarks(SphinxPostTransform):
             mark.parent.insert(mark.parent.index(mark) + 1, kept)
 
 
-def _summary(claims: list[str], words: dict[str, str]) -> str:
-    named = [c for c in claims if len(c) <= SHORT][:NAMED]
+def _summary(claims: list[tuple[str, bool]], words: dict[str, str]) -> str:
+    named = [c for c, nameable in claims if nameable and len(c) <= SHORT][:NAMED]
     if not named:
         return words["bare"]
     more = len(claims) - len(named)
