@@ -54,6 +54,9 @@ EXAMPLES = {
                       lambda: plt.subplots(figsize=(4, 4))[1]),
     "plot_phase_portrait": (lambda ax: epp.plot_phase_portrait(ax=ax),
                             lambda: plt.subplots(figsize=(9, 5))[1]),
+    "plot_potential_well": (lambda axes: epp.plot_potential_well(axes=axes),
+                            lambda: plt.subplots(2, 1, figsize=(9, 8.5), sharex=True,
+                                                 height_ratios=(2, 3))[1]),
     "plot_motion": (lambda axes: epp.plot_motion(ep.solve(1.0), np.linspace(0, 10, 200), axes=axes,
                                                  compare=False),
                     lambda: plt.subplots(2, 1, figsize=(7, 5))[1]),
@@ -313,8 +316,8 @@ def test_the_animation_reads_on_a_phone_and_its_pendulums_fill_their_panel():
         plt.close(anim._fig)
 
 
-@pytest.mark.parametrize("name", [n for n in epp.FIGURES if n not in ("plot_motion",
-                                                                     "plot_harmonics")])
+@pytest.mark.parametrize("name", [n for n in epp.FIGURES if n not in (
+    "plot_motion", "plot_harmonics", "plot_potential_well")])
 def test_draws_on_a_figure_made_without_pyplot(name):
     # A matplotlib.figure.Figure() has a bare FigureCanvasBase, with no renderer of its own:
     # the legend and label placement must still measure its text (the book makes one so).

@@ -8,9 +8,10 @@ by the functions that draw, so importing :mod:`elliptic_pendulum` does not selec
 The functions are named ``plot_<what it shows>``, and grouped by subject in the modules of
 this package: the pendulum and its phase plane (:mod:`.phase`), the elliptic functions and
 Lemma 2's extensions (:mod:`.functions`), the period and its harmonics (:mod:`.harmonics`),
-the forces of rod and string (:mod:`.forces`), the driven pendulum (:mod:`.response`), and
-the animation (:mod:`.animation`). The names of earlier releases (``phase_portrait``,
-``tension_plot``, ...) stay as aliases of the same functions.
+the forces of rod and string (:mod:`.forces`), the driven pendulum (:mod:`.response`), the
+potential well above the phase portrait (:mod:`.well`), and the animation
+(:mod:`.animation`). The names of earlier releases (``phase_portrait``, ``tension_plot``, ...)
+stay as aliases of the same functions.
 
 >>> import elliptic_pendulum.plotting as epp
 >>> epp.tension_plot is epp.plot_tension
@@ -56,19 +57,20 @@ from .response import (
     response_plot,
     sweep_plot,
 )
+from .well import plot_potential_well
 
 #: The figure functions, one name each, in the order of the book.
 FIGURES = (
-    "plot_pendulum", "plot_phase_portrait", "plot_motion", "plot_jacobi", "plot_integral",
-    "plot_inverse", "plot_amplitude", "plot_period_ratio", "plot_tension", "plot_extension",
-    "plot_approximation_error", "plot_harmonics", "plot_string_flight",
+    "plot_pendulum", "plot_phase_portrait", "plot_potential_well", "plot_motion", "plot_jacobi",
+    "plot_integral", "plot_inverse", "plot_amplitude", "plot_period_ratio", "plot_tension",
+    "plot_extension", "plot_approximation_error", "plot_harmonics", "plot_string_flight",
     "plot_string_phase_plane", "plot_backbone", "plot_response", "plot_sweep",
 )
 
 __all__ = [
-    "plot_pendulum", "plot_phase_portrait", "plot_motion", "plot_jacobi", "plot_integral",
-    "plot_inverse", "plot_amplitude", "plot_period_ratio", "plot_tension", "plot_extension",
-    "plot_approximation_error", "plot_harmonics", "plot_string_flight",
+    "plot_pendulum", "plot_phase_portrait", "plot_potential_well", "plot_motion", "plot_jacobi",
+    "plot_integral", "plot_inverse", "plot_amplitude", "plot_period_ratio", "plot_tension",
+    "plot_extension", "plot_approximation_error", "plot_harmonics", "plot_string_flight",
     "plot_string_phase_plane", "plot_backbone", "plot_response", "plot_sweep",
     # the names of earlier releases, aliases of the functions above
     "pendulum_sketch", "phase_portrait", "period_ratio_plot", "tension_plot", "extension_plot",
