@@ -29,8 +29,8 @@ from pathlib import Path
 # The chapters: the book's pages that teach (the registry of checks, the glossary, the
 # references, the licence and the teacher's guide are reference matter).
 CHAPTERS = ("intro", "equation", "energy", "libration", "libration_extension",
-            "libration_solution", "separatrix", "rotation", "period_in_depth", "rod_or_string",
-            "resonance", "in_motion", "closing", "notes_on_original")
+            "libration_solution", "separatrix", "rotation", "period_in_depth", "action_angle",
+            "rod_or_string", "resonance", "in_motion", "closing", "notes_on_original")
 
 MACHINERY = re.compile(
     r"\b(checks?|checked|checking|mutants?|residuals?|tolerances?|verdicts?|sympy|"
