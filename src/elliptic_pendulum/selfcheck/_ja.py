@@ -34,6 +34,13 @@ KINDS = {float: "数値", int: "整数", bool: "真偽値 True または False",
 OTHER_KIND = "型 {kind} の値"
 
 MESSAGES = {
+    # complex_picture.py
+    "the ratio $K'/K$ for $k = \\sin 75^\\circ$, to four digits":
+        "$k = \\sin 75^\\circ$ に対する比 $K'/K$（4 桁まで）",
+    ("That is $K/K'$: $K'$ comes from the mean that starts at $k_c = \\cos 75^\\circ$, and "
+     "$K = \\pi/(2\\operatorname{AGM}(1, k_c))$."):
+        ("それは $K/K'$ である。$K'$ は $k_c = \\cos 75^\\circ$ から始まる平均から得られ、"
+         "$K = \\pi/(2\\operatorname{AGM}(1, k_c))$ であることに注意すること。"),
     # action_angle.py
     ("the relative error $|E_b/(\\omega_0 J) - 1|$ of the oscillator's action for a swing of "
      "30 degrees"):
@@ -42,7 +49,8 @@ MESSAGES = {
      "whose zero is at the pivot."):
         ("エネルギーは最下点から測ること。支点を基準とする本書のエネルギー $E$ ではなく、"
          "$E_b = E + mg\\ell$ を用いる。"),
-    "`scipy.special.ellipk` and `ellipe` take the parameter $m = \\alpha^2$, not the modulus $\\alpha$.":
+    ("`scipy.special.ellipk` and `ellipe` take the parameter $m = \\alpha^2$, not the modulus "
+     "$\\alpha$."):
         ("`scipy.special.ellipk` と `ellipe` は母数 $\\alpha$ ではなく、パラメータ "
          "$m = \\alpha^2$ を引数にとる。"),
     ("the amplitude, in degrees, of a swing of 40 degrees once its string is slowly shortened to "
