@@ -100,15 +100,20 @@ def test_the_general_solution_statement():
 
 def test_the_silent_repairs_are_listed_and_the_constant_of_41_is_not():
     # A reading of the book against the note found four places that the book repaired without
-    # listing them: the signed tension, Lemma 2's missing continuity at +-a, "smooth" where
-    # Lemma 2 gives C^2, and the equilibria z = +-1 discarded as singular in §5. (41)'s
-    # c_{4,1} gives the same motion lowered by 2 pi: with arbitrary constants, no slip.
+    # listing them: the signed tension, Lemma 2's missing continuity at +-a, "smooth" in §6
+    # where Lemma 2.3 gives C^2 (§4 says "at least C^2"), and the upside-down equilibrium
+    # dropped with z = +-1 in §5 (singular solutions, as the note says, but motions). The
+    # page's list (book/notes_on_original.md) has more, (41)'s c_{4,1} among them; the
+    # library holds these, whose statements it can test.
     statements = {e.location: e for e in ERRATA if e.kind == "statement"}
-    assert {"§2, (1)", "Lemma 2, parts 2 and 3", "§4, after (25), and §6",
-            "§5, before (27)"} <= set(statements)
+    assert {"§2, (1)", "Lemma 2, parts 2 and 3", "§6", "§5, before (27)"} <= set(statements)
     lemma = statements["Lemma 2, parts 2 and 3"]
     assert "closed" in lemma.corrected_text and "closed" not in lemma.printed_text
-    assert "equilibri" in statements["§5, before (27)"].comment
+    assert "at least C^2" in statements["§6"].comment
+    singular = statements["§5, before (27)"]
+    assert "equilibri" in singular.comment and "singular solutions, as the note says" in (
+        singular.comment)
+    assert "2n" in next(e for e in ERRATA if e.location == "§4, after (25)").corrected_text
     assert all(e.location != "(41)" for e in ERRATA)
     locations = [(e.location, e.kind) for e in ERRATA]
     assert len(locations) == len(set(locations))  # the book's page looks entries up by them

@@ -117,7 +117,8 @@ def printed_errata() -> list[Erratum]:
         Erratum(
             "§4, after (25)", "statement",
             r"\xi = \pm 1 \text{ is not a solution, so (25) is the general solution of (12)}",
-            r"\text{(3) has unique solutions: every solution of (3) with this energy is (25)}",
+            r"\text{(3) has unique solutions: every solution of (3) with this energy is (25)} "
+            r"+ 2n\pi",
             None,
             Identity("theta0_solves_eq12", "§4, after (25)", sp.Derivative(theta0, t) ** 2,
                      2 * w2 * sp.Add(sp.cos(theta0), -sp.cos(theta0), evaluate=False),
@@ -127,16 +128,17 @@ def printed_errata() -> list[Erratum]:
             "side has a simple zero there, and so do swings that rest at theta_0 for a while "
             "and then fall back: (12) has solutions that are not (25). None of them satisfies "
             "(3), since theta'' = 0 at rest while sin(theta_0) != 0. (3) has a Lipschitz right "
-            "side, so its solutions are unique, and those with energy c_1 are the (25).",
+            "side, so its solutions are unique, and those with energy c_1 are the (25) and "
+            "their translates by 2 n pi. The note gives (14) as the reason; it is (3).",
         ),
         Erratum(
-            "§4, after (25), and §6", "statement",
-            r"\text{the solution is smooth (at least } C^2 \text{)}",
-            r"\text{the solution is } C^2 \text{ (Lemma 2); analytic, by the theory of sn}",
+            "§6", "statement",
+            r"\hat I \text{ is smooth}",
+            r"\hat I \text{ is } C^2 \text{ (Lemma 2.3); analytic, by the theory of sn}",
             None, None,
-            "Lemma 2 gives C^2 and no more; that the solution is smooth, indeed analytic, is "
-            "a property of sn that the note quotes but does not prove. The same in §6, where "
-            "'I-hat is smooth' is shown as Lemma 2.3's C^2.",
+            "§4 hedges ('smooth, at least C^2') and Lemma 2 proves C^2; §6 drops the hedge and "
+            "calls I-hat smooth, which is true (it is analytic, a property of sn the note "
+            "quotes) but is not what Lemma 2.3 shows.",
         ),
         Erratum(
             "(26)", "notation", r"4K\left(\sin\frac{\theta_0}{2}\right)\sqrt{\ell/g}",
@@ -162,13 +164,14 @@ def printed_errata() -> list[Erratum]:
         Erratum(
             "§5, before (27)", "statement",
             r"z = \pm 1 \text{ are singular solutions; the general solution is the rest}",
-            r"z = \pm 1 \text{ are the equilibria } \theta = \pm\pi \text{, solutions of (3) "
-            r"and part of the general solution}",
+            r"z = \pm 1 \text{ are singular, and are motions: the equilibrium } \theta = \pi "
+            r"\text{ (mod } 2\pi\text{) belongs to regime III}",
             None, None,
-            "z' = omega_0 (1 - z^2) has a Lipschitz right side, so z = +-1 are not singular "
-            "solutions: they are the pendulum at rest upside down, a motion of energy "
-            "2 omega_0^2 like the separatrix. Discarding them drops that equilibrium from the "
-            "general solution in regime III, which is (28) together with theta = pi (mod 2 pi).",
+            "Under the usual definition (a solution outside the general solution) z = +-1 are "
+            "singular solutions, as the note says. What matters is what discarding them drops: "
+            "they are the equilibrium upside down, a motion of (3) of energy 2 omega_0^2 like "
+            "the separatrix, so regime III is (28) and its translates by 2 n pi together with "
+            "theta = pi (mod 2 pi)."
         ),
         Erratum(
             "§5, between (13) and (27)", "error",
