@@ -30,7 +30,8 @@ from pathlib import Path
 # references, the licence and the teacher's guide are reference matter).
 CHAPTERS = ("intro", "equation", "energy", "libration", "libration_extension",
             "libration_solution", "separatrix", "rotation", "period_in_depth", "rod_or_string",
-            "resonance", "in_motion", "closing", "notes_on_original")
+            "resonance", "in_motion", "closing", "problems",
+            "notes_on_original")
 
 MACHINERY = re.compile(
     r"\b(checks?|checked|checking|mutants?|residuals?|tolerances?|verdicts?|sympy|"
