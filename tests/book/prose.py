@@ -30,7 +30,7 @@ from pathlib import Path
 # references, the licence and the teacher's guide are reference matter).
 CHAPTERS = ("intro", "equation", "energy", "libration", "libration_extension",
             "libration_solution", "separatrix", "rotation", "period_in_depth", "complex_picture",
-            "action_angle", "rod_or_string", "resonance", "in_motion", "closing",
+            "action_angle", "rod_or_string", "resonance", "in_motion", "closing", "problems",
             "notes_on_original")
 
 MACHINERY = re.compile(
