@@ -31,7 +31,8 @@ def plot_potential_well(omega0: float = 1.0, axes: Any = None, swing_deg: float 
     released at rest from ``swing_deg`` degrees, the separatrix (2, the tops of the well) and
     a rotation kicked at the bottom with :math:`\theta'(0) = 2\omega_0\,\mathrm{kick}`. Each
     level is solid where the motion can be (the level above the well) and dotted where it
-    cannot. The lower axes hold :func:`plot_phase_portrait` on the same θ range, with the same
+    cannot. The lower axes hold
+    :func:`~elliptic_pendulum.plotting.phase.plot_phase_portrait` on the same θ range, with the same
     four motions drawn thick in the colours of their levels; dotted verticals through both
     panels mark the swing's turning angles and the tops :math:`\pm\pi`.
 
@@ -40,7 +41,7 @@ def plot_potential_well(omega0: float = 1.0, axes: Any = None, swing_deg: float 
     omega0 : float
         ω0 = sqrt(g/ℓ). The upper panel does not depend on it (energies are in units of
         :math:`m\ell^2\omega_0^2/2`); the lower one does, through θ'.
-    axes : sequence of two matplotlib.axes.Axes, optional
+    axes : tuple of matplotlib.axes.Axes, optional
         Upper and lower axes; a new figure of two panels sharing the θ axis when None.
     swing_deg : float
         Amplitude of the swing, in degrees (0 < swing_deg < 180).
