@@ -290,23 +290,25 @@ MESSAGES = {
     "the largest cosine coefficient $|a_n|$ of your FFT of the swing of 150 degrees":
         "振幅 150 度の振動の FFT で得た余弦の係数の絶対値 $|a_n|$ の最大値",
     ("Start the swing at the bottom on the way up, $\\theta(0) = 0$, $\\theta'(0) > 0$ (from a "
-     "turning point $\\theta$ is even: all cosines), and sample exactly one period, at $kT/N$ "
-     "for $k = 0, \\ldots, N - 1$ (not $T$ itself)."):
+     "turning point $\\theta$ is even: all cosines), and sample exactly one period, at $kP_{II}/N$ "
+     "for $k = 0, \\ldots, N - 1$ (not $P_{II}$ itself)."):
         ("振動は最下点から上向きに、$\\theta(0) = 0$、$\\theta'(0) > 0$ "
          "で始めること（折り返し点から始めると $\\theta$ は偶関数になり、すべて余弦の項になる）"
-         "。また、ちょうど 1 周期を $k = 0, \\ldots, N - 1$ に対する $kT/N$ "
-         "で標本化すること（$T$ 自身は含めない）。"),
+         "。また、ちょうど 1 周期を $k = 0, \\ldots, N - 1$ に対する $kP_{II}/N$ "
+         "で標本化すること（$P_{II}$ 自身は含めない）。"),
     ("Coefficients this small but not tiny are the integrator's error: tighten its tolerances "
      "(`rtol`, `atol`), or use `ep.integrate`."):
         ("この程度に小さいが、ごく小さくはない係数は積分器の誤差である。許容誤差（`rtol`、"
          "`atol`）を厳しくするか、`ep.integrate` を用いること。"),
     "the largest sine coefficient $|b_n|$ of an even harmonic $n$ in your FFT":
         "FFT で得た偶数次の高調波 $n$ の正弦の係数の絶対値 $|b_n|$ の最大値",
-    ("Sample exactly one period, at $kT/N$ for $k = 0, \\ldots, N - 1$ (not $T$ itself), with "
-     "$T$ the period of this amplitude, not $2\\pi/\\omega_0$; and take the even harmonics $n = "
+    ("Sample exactly one period, at $kP_{II}/N$ for $k = 0, \\ldots, N - 1$ (not $P_{II}$ "
+     "itself), with $P_{II}$ the period of this amplitude, not $2\\pi/\\omega_0$; and take the "
+     "even harmonics $n = "
      "2, 4, \\ldots$ (index $n$ of `rfft`)."):
-        ("ちょうど 1 周期を $k = 0, \\ldots, N - 1$ に対する $kT/N$ で標本化すること（$T$ "
-         "自身は含めない）。ここで $T$ は $2\\pi/\\omega_0$ ではなく、この振幅での周期である。"
+        ("ちょうど 1 周期を $k = 0, \\ldots, N - 1$ に対する $kP_{II}/N$ で標本化すること"
+         "（$P_{II}$ 自身は含めない）。ここで $P_{II}$ は $2\\pi/\\omega_0$ ではなく、"
+         "この振幅での周期である。"
          "また偶数次の高調波 $n = 2, 4, \\ldots$（`rfft` の添字 $n$）をとること。"),
     "the sine coefficient $b_1$ of the fundamental, from your FFT":
         "FFT で得た基本波の正弦の係数 $b_1$",
@@ -350,8 +352,9 @@ MESSAGES = {
      "square root of its modulus."):
         ("その値は 2 つの乗数の積 $\\det M$ である。複素共役の組の各乗数の絶対値は、"
          "その積の絶対値の平方根である。"),
-    "The period of the orbit is that of the force, $T = 2\\pi/\\Omega$, not $2\\pi/\\omega_0$.":
-        "軌道の周期は $2\\pi/\\omega_0$ ではなく、外力の周期 $T = 2\\pi/\\Omega$ である。",
+    ("The period of the orbit is that of the force, $P_\\Omega = 2\\pi/\\Omega$, not "
+     "$2\\pi/\\omega_0$."):
+        "軌道の周期は $2\\pi/\\omega_0$ ではなく、外力の周期 $P_\\Omega = 2\\pi/\\Omega$ である。",
     "the amplitude (in radians) where Duffing's backbone crosses the exact one":
         "ダフィングの骨格曲線が厳密な骨格曲線と交わる振幅（ラジアン）",
     # rod_or_string.py
@@ -420,14 +423,14 @@ MESSAGES = {
      "speed itself."):
         ("その値は最大の速さと最小の速さの比 $1/\\gamma'$ である。"
          "最小の速さそのものを答えること。"),
-    "the time $T_{IV}$ of one turn":
-        "1 回転の時間 $T_{IV}$",
+    "the time $P_{IV}$ of one turn":
+        "1 回転の時間 $P_{IV}$",
     ("That is half a turn: $\\operatorname{am}$ must grow by $\\pi$, so $\\theta$ grows by "
      "$2\\pi$."):
         ("その値は半回転の時間である。$\\operatorname{am}$ が $\\pi$ 増えなければならず、"
          "そのとき $\\theta$ は $2\\pi$ 増える。"),
-    "Did you leave out $\\omega_0 = 1.7$? $T_{IV} = 2\\gamma K_1(\\gamma)/\\omega_0$.":
-        ("$\\omega_0 = 1.7$ を入れ忘れていないか。$T_{IV} = 2\\gamma K_1(\\gamma)/\\omega_0$ "
+    "Did you leave out $\\omega_0 = 1.7$? $P_{IV} = 2\\gamma K_1(\\gamma)/\\omega_0$.":
+        ("$\\omega_0 = 1.7$ を入れ忘れていないか。$P_{IV} = 2\\gamma K_1(\\gamma)/\\omega_0$ "
          "である。"),
     "the mean angular velocity $(2\\omega_0/\\gamma)\\,\\tau$":
         "平均角速度 $(2\\omega_0/\\gamma)\\,\\tau$",
@@ -441,10 +444,10 @@ MESSAGES = {
         "その値は出発時の速さ $\\theta'(0)$ であり、1 回転にわたる平均ではない。",
     "the mean angular velocity for $v = 10$":
         "$v = 10$ のときの平均角速度",
-    ("That is the estimate $v - \\omega_0^2/v$; the exercise asks for the mean $2\\pi/T_{IV}$ "
+    ("That is the estimate $v - \\omega_0^2/v$; the exercise asks for the mean $2\\pi/P_{IV}$ "
      "of the motion."):
         ("その値は見積もり $v - \\omega_0^2/v$ である。演習が求めているのは、運動の平均 "
-         "$2\\pi/T_{IV}$ である。"),
+         "$2\\pi/P_{IV}$ である。"),
     "That is the kick $v$ itself; gravity slows the rotation on average.":
         "その値は初速 $v$ そのものである。重力は平均して回転を遅くする。",
     "the remainder of the mean after $v - 1/v$, times $v^3$, for $v = 30$":
@@ -469,20 +472,20 @@ MESSAGES = {
     "the largest value of $W$ over a period for $\\gamma = 0.3$":
         "$\\gamma = 0.3$ のときの 1 周期にわたる $W$ の最大値",
     # separatrix.py
-    "the time $T_{IV}$ of one turn for $\\varepsilon = 10^{-2}$, $\\omega_0 = 1$":
-        "$\\varepsilon = 10^{-2}$、$\\omega_0 = 1$ のときの 1 回転の時間 $T_{IV}$",
+    "the time $P_{IV}$ of one turn for $\\varepsilon = 10^{-2}$, $\\omega_0 = 1$":
+        "$\\varepsilon = 10^{-2}$、$\\omega_0 = 1$ のときの 1 回転の時間 $P_{IV}$",
     ("That is the estimate $\\log(8/\\varepsilon)$ of part 2; part 1 asks for the time of "
      "`ep.solve`."):
         ("その値は小問 2 の見積もり $\\log(8/\\varepsilon)$ である。小問 1 が求めているのは "
          "`ep.solve` による時間である。"),
     "The kick is $2\\omega_0(1 + \\varepsilon)$, not $2\\omega_0 + \\varepsilon$.":
         "初速は $2\\omega_0 + \\varepsilon$ ではなく $2\\omega_0(1 + \\varepsilon)$ である。",
-    ("That is half a turn, from the bottom to the top; $T_{IV}$ takes the pendulum from the "
+    ("That is half a turn, from the bottom to the top; $P_{IV}$ takes the pendulum from the "
      "bottom round to the bottom again."):
-        ("その値は最下点から最高点までの半回転の時間である。$T_{IV}$ は、"
+        ("その値は最下点から最高点までの半回転の時間である。$P_{IV}$ は、"
          "振り子が最下点から一周して再び最下点に戻るまでの時間である。"),
-    "the time $T_{IV}$ of one turn for $\\varepsilon = 10^{-8}$, $\\omega_0 = 1$":
-        "$\\varepsilon = 10^{-8}$、$\\omega_0 = 1$ のときの 1 回転の時間 $T_{IV}$",
+    "the time $P_{IV}$ of one turn for $\\varepsilon = 10^{-8}$, $\\omega_0 = 1$":
+        "$\\varepsilon = 10^{-8}$、$\\omega_0 = 1$ のときの 1 回転の時間 $P_{IV}$",
     "the exact time $t_\\delta$ for $\\delta = 10^{-2}$, $\\omega_0 = 1.3$":
         "$\\delta = 10^{-2}$、$\\omega_0 = 1.3$ のときの正確な時刻 $t_\\delta$",
     ("That is the estimate $\\log(4/\\delta)/\\omega_0$, too large by about "

@@ -190,7 +190,7 @@ register(
                               "Start the swing at the bottom on the way up, "
                               "$\\theta(0) = 0$, $\\theta'(0) > 0$ (from a turning point "
                               "$\\theta$ is even: all cosines), and sample exactly one period, "
-                              "at $kT/N$ for $k = 0, \\ldots, N - 1$ (not $T$ itself).",
+                              "at $kP_{II}/N$ for $k = 0, \\ldots, N - 1$ (not $P_{II}$ itself).",
                               lambda e: 0.5),
                          Hint(lambda a, e: 1e-6 < abs(a) <= 1e-2,
                               "Coefficients this small but not tiny are the integrator's "
@@ -200,9 +200,10 @@ register(
             Value("even_sines", "the largest sine coefficient $|b_n|$ of an even harmonic $n$ "
                   "in your FFT", rtol=0.0, atol=1e-6, hidden_rtol=0.0,
                   hints=(Hint(lambda a, e: abs(a) > 1e-2,
-                              "Sample exactly one period, at $kT/N$ for "
-                              "$k = 0, \\ldots, N - 1$ (not $T$ itself), with $T$ the period "
-                              "of this amplitude, not $2\\pi/\\omega_0$; and take the even "
+                              "Sample exactly one period, at $kP_{II}/N$ for "
+                              "$k = 0, \\ldots, N - 1$ (not $P_{II}$ itself), with $P_{II}$ "
+                              "the period of this amplitude, not $2\\pi/\\omega_0$; and take "
+                              "the even "
                               "harmonics $n = 2, 4, \\ldots$ (index $n$ of `rfft`).",
                               lambda e: 0.2),
                          Hint(lambda a, e: 1e-6 < abs(a) <= 1e-2,

@@ -107,7 +107,7 @@ register(
                               lambda e: e**2),
                          Hint(lambda a, e: abs(a - math.exp(-0.1 * 2 * math.pi)) < 1e-6 * a,
                               "The period of the orbit is that of the force, "
-                              "$T = 2\\pi/\\Omega$, not $2\\pi/\\omega_0$.",
+                              "$P_\\Omega = 2\\pi/\\Omega$, not $2\\pi/\\omega_0$.",
                               lambda e: math.exp(-0.1 * 2 * math.pi)))),
         ),
         reference=weak,

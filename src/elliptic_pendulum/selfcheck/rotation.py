@@ -136,14 +136,14 @@ register(
     Exercise(
         "ex-rotation-mean",
         values=(
-            Value("T_quad", "the time $T_{IV}$ of one turn", rtol=1e-6, hidden_rtol=1e-9,
+            Value("T_quad", "the time $P_{IV}$ of one turn", rtol=1e-6, hidden_rtol=1e-9,
                   hints=(Hint(lambda a, e: _near(a, e / 2, 1e-5),
                               "That is half a turn: $\\operatorname{am}$ must grow by $\\pi$, "
                               "so $\\theta$ grows by $2\\pi$.",
                               lambda e: e / 2),
                          Hint(lambda a, e: _near(a, e * _W_MEAN, 1e-5),
                               "Did you leave out $\\omega_0 = 1.7$? "
-                              "$T_{IV} = 2\\gamma K_1(\\gamma)/\\omega_0$.",
+                              "$P_{IV} = 2\\gamma K_1(\\gamma)/\\omega_0$.",
                               lambda e: e * _W_MEAN))),
             Value("mean_formula", "the mean angular velocity $(2\\omega_0/\\gamma)\\,\\tau$",
                   rtol=1e-6, hidden_rtol=1e-9,
@@ -161,7 +161,7 @@ register(
                               lambda e: 2.6 * _W_MEAN))),
         ),
         reference=mean,
-        written="For part 1, compare $\\theta(t + nT_{IV})$ with $\\theta(t)$. For part 2, "
+        written="For part 1, compare $\\theta(t + nP_{IV})$ with $\\theta(t)$. For part 2, "
                 "by how much must the argument of $\\operatorname{am}$ in {ref}`(46) <eq-46>` "
                 "grow for $\\theta$ to gain $2\\pi$? Then recall what {ref}`(45) <eq-45>` says "
                 "$\\tau$ is the mean of.",
@@ -173,7 +173,7 @@ register(
                   hidden_rtol=1e-12,
                   hints=(Hint(lambda a, e: _near(a, 10 - 1 / 10, 1e-8),
                               "That is the estimate $v - \\omega_0^2/v$; the exercise asks for "
-                              "the mean $2\\pi/T_{IV}$ of the motion.",
+                              "the mean $2\\pi/P_{IV}$ of the motion.",
                               lambda e: 10 - 1 / 10),
                          Hint(lambda a, e: _near(a, 10.0, 1e-8),
                               "That is the kick $v$ itself; gravity slows the rotation on "

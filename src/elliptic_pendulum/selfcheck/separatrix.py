@@ -82,7 +82,7 @@ def _turn_hints(eps: float) -> tuple[Hint, ...]:
                   "The kick is $2\\omega_0(1 + \\varepsilon)$, not $2\\omega_0 + \\varepsilon$.",
                   lambda e: _turn(2 + eps)),
              Hint(lambda a, e: _near(a, e / 2, 1e-5),
-                  "That is half a turn, from the bottom to the top; $T_{IV}$ takes the "
+                  "That is half a turn, from the bottom to the top; $P_{IV}$ takes the "
                   "pendulum from the bottom round to the bottom again.",
                   lambda e: e / 2)]
     if eps > 1e-6:  # for eps = 1e-8 the estimate is right to 1e-8
@@ -135,9 +135,9 @@ register(
     Exercise(
         "ex-separatrix-turn",
         values=(
-            Value("T_eps2", "the time $T_{IV}$ of one turn for $\\varepsilon = 10^{-2}$, "
+            Value("T_eps2", "the time $P_{IV}$ of one turn for $\\varepsilon = 10^{-2}$, "
                   "$\\omega_0 = 1$", rtol=1e-6, hidden_rtol=1e-12, hints=_turn_hints(1e-2)),
-            Value("T_eps8", "the time $T_{IV}$ of one turn for $\\varepsilon = 10^{-8}$, "
+            Value("T_eps8", "the time $P_{IV}$ of one turn for $\\varepsilon = 10^{-8}$, "
                   "$\\omega_0 = 1$", rtol=1e-6, hidden_rtol=1e-8, hints=_turn_hints(1e-8)),
         ),
         reference=turn,
