@@ -8,7 +8,7 @@ from functools import cache
 from ._core import Exercise, Hint, Value, register
 
 
-def _action_mp(theta0):  # type: ignore[no-untyped-def]
+def _action_mp(theta0):
     # J / (m ell^2 omega0) of a swing of amplitude theta0 (an mpf), by mpmath's tanh-sinh
     # quadrature of the loop integral over the angle: four times the upper branch.
     import mpmath
