@@ -308,9 +308,10 @@ def evaluate(u, c: Constants, u_lo=0.0, amplitude: bool | str = False, name: str
     dn = np.where(odd, c.kc / dn_v, dn_v)
     if not amplitude:
         return sn, cn, dn, None
-    # am(v + n K) = n pi/2 + (am v, or arctan(kc sc v) for odd n); ratio = kc sc v.
-    # One arctan2 pass for both cases (arctan r = arctan2(r, 1)).
-    am = np.arctan2(np.where(odd, ratio, s), np.where(odd, 1.0, cn_v))
+    # am(v + n K) = n pi/2 + (am v = arctan(sc v), or arctan(kc sc v) for odd n), from
+    # ratio = kc sc v alone (fewer roundings than sn and cn): one arctan2 pass for both
+    # cases, arctan2(ratio, kc) and arctan2(ratio, 1).
+    am = np.arctan2(ratio, np.where(odd, 1.0, c.kc))
     if amplitude == "split":  # am = n pi/2 + am, for a caller that adds n pi/2 exactly
         return sn, cn, dn, (n, am)
     return sn, cn, dn, (n * (0.5 * _PI_HI) + am) + n * (0.5 * _PI_LO)
@@ -359,7 +360,7 @@ def evaluate_float(u, c, u_lo=0.0, amplitude=False, name="u", quarters=0.0):
     dn = c.kc / dn_v if odd else dn_v
     if not amplitude:
         return sn, cn, dn, None
-    y, x = (ratio, 1.0) if odd else (s, cn_v)
+    y, x = (ratio, 1.0) if odd else (ratio, c.kc)
     if abs(y) < 1e-300:  # a subnormal amplitude is right; the array path ignores underflow too
         with np.errstate(under="ignore"):
             am = _f(np.arctan2, y, x)
