@@ -8,6 +8,7 @@ Modules, from the bottom up (the design note of the reference site gives the inv
 
 * :mod:`.dd` -- double-double arithmetic (error-free sums and products, sqrt, sin/cos);
 * :mod:`.landen` -- the AGM / descending Landen constants and the Jacobi kernel on them;
+* :mod:`.careful` -- that kernel in double-double arithmetic, for kc below 1/16;
 * :mod:`.quarter` -- K alone, in double precision, for many moduli at once;
 * :mod:`.jacobi` -- the edges of the Jacobi functions (k = 0, kc = 0, k > 1);
 * :mod:`.codes` -- the integer code of each regime;

@@ -36,7 +36,7 @@ def _ordinary(u, kc, kc_lo, amplitude, u_lo=0.0):
     circular = (kc == 1) & (kc_lo == 0)
     edge = (kc == 0) | circular
     sn_, cn_, dn_, am_ = _landen.evaluate(np.where(edge, 0.0, u), c, np.where(edge, 0.0, u_lo),
-                                          amplitude=amplitude)
+                                          amplitude=amplitude, careful=True)
     if np.any(kc == 0):
         # kc = 0 is the separatrix: sn = tanh, cn = dn = sech, am = gd.
         sech = _landen.sech(u)
@@ -123,4 +123,5 @@ def values_float(u: float, k: float, amplitude: bool = False):
     kc, kc_lo = _dd.sqrt(p, p_lo, math.sqrt)
     if kc == 1.0:
         return None  # k so small that kc rounds to 1: the circular edge, on the array path
-    return _landen.evaluate_float(u, _landen.constants_float(kc, kc_lo), amplitude=amplitude)
+    return _landen.evaluate_float(u, _landen.constants_float(kc, kc_lo), amplitude=amplitude,
+                                  careful=True)

@@ -12,7 +12,10 @@ the complementary modulus kc carries information:
    digits even after thousands of periods.
 3. The descending Landen (Gauss) recurrence of GSL's ``gsl_sf_elljac_e``
    [Abramowitz & Stegun 16.12, DLMF 22.20(ii)] started from t = tan(pi v /
-   (2 K)), |t| <= 1. It multiplies and divides positive numbers only, so
+   (2 K)), |t| <= 1, the phase v M = pi v / (2 K) formed as a double-double
+   (v keeps the low part of the reduction, M that of the AGM). Below kc = 1/16
+   the recurrence runs in double-double arithmetic (:mod:`.careful`). It
+   multiplies and divides positive numbers only, so
    sn(v), cn(v) and dn(v) come out with small *relative* error; the shift by
    n K is exact algebra (DLMF 22.4.3). One tangent and a few multiplications
    per point, and no branch on the size of t: this is why it is faster than
@@ -27,6 +30,7 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
+from . import careful as _careful
 from . import dd as _dd
 from .dd import PI_HI as _PI_HI
 from .dd import PI_LO as _PI_LO
@@ -34,8 +38,9 @@ from .dd import fast_two_sum as _fast_two_sum
 from .dd import two_prod as _two_prod
 from .dd import two_sum as _two_sum
 
-__all__ = ["Constants", "complement", "constants", "core", "evaluate", "quarter_period",
-           "reduce", "sech", "gudermannian", "_PI_HI", "_PI_LO", "_two_prod", "_two_sum"]
+__all__ = ["SCALARS", "Constants", "complement", "constants", "core", "evaluate",
+           "quarter_period", "reduce", "sech", "gudermannian", "_PI_HI", "_PI_LO",
+           "_two_prod", "_two_sum"]
 
 
 def _chop(x):
@@ -54,10 +59,14 @@ class Constants(NamedTuple):
     k_hi: Any   # K = k_hi + k_mid + k_lo (quarter period), n*k_hi and n*k_mid exact
     k_mid: Any
     k_lo: Any
-    scale: Any  # pi / (2 K) = M(1, kc)
+    scale: Any  # pi / (2 K) = M(1, kc) = scale + scale_lo (a double-double)
+    scale_lo: Any
     mu: tuple   # the AGM sequence a_0 = 1, ..., a_N (a_N: see `_piece`)
     rho: tuple  # b_0 / a_0 = kc, ..., b_N / a_N = 1 (the last level is circular)
 
+
+#: How many of the fields of Constants are one number per modulus (the rest: mu, rho).
+SCALARS = 7
 
 # An element's AGM stops where a - b <= 1e-8 a: there r = (a - b)/(a + b) <= 5e-9, and
 # M(a, b) = c (1 - r^2/4 - 5 r^4/64 - ...) with c = (a + b)/2 (from Gauss's
@@ -89,7 +98,7 @@ def _constants(kc: Any, kc_lo: Any = 0.0) -> Constants:
     # recurrence in `core`, so pieces that converged in fewer steps can share one length.
     mu = [join(column) for column in zip(*(pad(c.mu, levels) for c in parts), strict=True)]
     rho = [join(column) for column in zip(*(pad(c.rho, levels) for c in parts), strict=True)]
-    return Constants._make([*(join([c[j] for c in parts]) for j in range(6)), tuple(mu),
+    return Constants._make([*(join([c[j] for c in parts]) for j in range(SCALARS)), tuple(mu),
                             tuple(rho)])
 
 
@@ -159,7 +168,7 @@ def _piece(kc: Any, kc_lo: Any) -> Constants:
     k_lo = (kh - k_hi - k_mid) + kl
     return Constants(np.where(top, 0.0, kc), np.where(top, np.inf, kh + kl),
                      np.where(top, np.inf, k_hi), np.where(top, 0.0, k_mid),
-                     np.where(top, 0.0, k_lo), mh, tuple(mu), tuple(rho))
+                     np.where(top, 0.0, k_lo), mh, ml, tuple(mu), tuple(rho))
 
 
 @lru_cache(maxsize=256)
@@ -191,7 +200,7 @@ def _constants_float(kc: float, kc_lo: float) -> Constants:
     k_hi = _dd.split(kh)[0]
     k_mid = _dd.split(kh - k_hi + kl)[0]
     k_lo = (kh - k_hi - k_mid) + kl
-    return Constants(kc, kh + kl, k_hi, k_mid, k_lo, mh, tuple(mu), tuple(rho))
+    return Constants(kc, kh + kl, k_hi, k_mid, k_lo, mh, ml, tuple(mu), tuple(rho))
 
 
 @lru_cache(maxsize=256)
@@ -239,12 +248,13 @@ def reduce(u, c: Constants, u_lo=0.0, quarters=0.0):
 
     ``quarters`` (whole quarter periods) lets a caller hold an argument as a multiple of K
     plus an exact remainder: the remainder then keeps its relative accuracy at t = 0.
-    Returns (n mod 4 as float, n, v).
+    Returns (n mod 4 as float, n, v, v_lo): v + v_lo is the remainder as a double-double
+    (the first two products are exact, the rest is rounded far below v's last bit).
     """
     n = np.rint(u / c.quarter)
-    v = ((u - n * c.k_hi) - n * c.k_mid) + (u_lo - n * c.k_lo)
+    v, v_lo = _two_sum((u - n * c.k_hi) - n * c.k_mid, u_lo - n * c.k_lo)
     n = n + quarters
-    return np.mod(n, 4.0), n, v
+    return np.mod(n, 4.0), n, v, v_lo
 
 
 # Below this kc, sn, cn, dn on |v| <= K/2 are tanh v, sech v, sech v to a relative
@@ -255,13 +265,26 @@ _TINY_KC = 2.0 ** -60
 _MAX_QUARTERS = 2.0 ** 26
 
 
-def core(v, c: Constants):
+def phase_tangent(v, v_lo, scale, scale_lo, tan):
+    """Tan(phi) for the phase phi = (v + v_lo)(scale + scale_lo) held as a double-double.
+
+    The product is exact (Dekker) and the low part enters to first order, tan(phi + e) =
+    tan(phi) + e (1 + tan^2 phi): one rounding of the phase, scaled by |v| at the far end of
+    a quarter period near k = 1 (K ~ log(4/kc)), would cost up to four ulp in cn and dn.
+    """
+    phi, e = _two_prod(v, scale)
+    e = e + (v * scale_lo + v_lo * scale)
+    t = tan(phi)
+    return t + e * (1.0 + t * t)
+
+
+def core(v, c: Constants, v_lo=0.0):
     """sn, cn, dn and kc sc at |v| <= K/2 (plus a hair) by the descending Landen recurrence.
 
     Relative accuracy: every operation after the tangent multiplies or
     divides positive numbers or adds numbers of one sign.
     """
-    t = np.tan(v * c.scale)
+    t = phase_tangent(v, v_lo, c.scale, c.scale_lo, np.tan)
     mu, rho = c.mu, c.rho
     cc = mu[-1] * t
     d = 1.0
@@ -285,7 +308,7 @@ def core(v, c: Constants):
 
 
 def evaluate(u, c: Constants, u_lo=0.0, amplitude: bool | str = False, name: str = "u",
-             quarters=0.0):
+             quarters=0.0, careful: bool = False):
     """sn, cn, dn (and am if ``amplitude``; as (n, rest) if it is "split") at u + u_lo.
 
     For kc in (0, 1].
@@ -294,18 +317,24 @@ def evaluate(u, c: Constants, u_lo=0.0, amplitude: bool | str = False, name: str
     DLMF 22.4.3: sn(v + K) = cd v, cn(v + K) = -kc sd v, dn(v + K) = kc nd v,
     and sn, cn change sign under v -> v + 2K. The reduction is exact for fewer
     than 2**26 quarter periods; beyond, a ValueError names the argument
-    (``name``) rather than returning digits that are not there.
+    (``name``) rather than returning digits that are not there. With ``careful`` the
+    elements with kc below 1/16 take the double-double recurrence of :mod:`.careful`
+    (the public Jacobi functions: within 4 ulp there; a motion's theta(t) does without).
     """
-    q, n, v = reduce(u, c, u_lo, quarters)
+    q, n, v, v_lo = reduce(u, c, u_lo, quarters)
     if np.any(np.abs(n) >= _MAX_QUARTERS):
         raise ValueError(f"{name} is too large: the elliptic argument must stay below "
                          "2**26 quarter periods (about 6.7e7 K1) for an exact reduction")
-    s, cn_v, dn_v, ratio = core(v, c)
+    s, cn_v, dn_v, ratio = core(v, c, v_lo)
     odd = (q == 1.0) | (q == 3.0)
     sign = np.where(q >= 2.0, -1.0, 1.0)
     sn = sign * np.where(odd, cn_v / dn_v, s)
     cn = sign * np.where(odd, -c.kc * s / dn_v, cn_v)
     dn = np.where(odd, c.kc / dn_v, dn_v)
+    careful = careful & (c.kc < _careful.SMALL_KC) & (c.kc >= _TINY_KC)
+    if np.any(careful):
+        sn, cn, dn, s, cn_v, ratio = _careful.overwrite(careful, q, v, v_lo, c,
+                                                        (sn, cn, dn, s, cn_v, ratio))
     if not amplitude:
         return sn, cn, dn, None
     # am(v + n K) = n pi/2 + (am v = arctan(sc v), or arctan(kc sc v) for odd n), from
@@ -329,10 +358,10 @@ def _f(ufunc, *args):
             return float(ufunc(*args))
 
 
-def evaluate_float(u, c, u_lo=0.0, amplitude=False, name="u", quarters=0.0):
+def evaluate_float(u, c, u_lo=0.0, amplitude=False, name="u", quarters=0.0, careful=False):
     """Compute :func:`evaluate` of one u (kc > 0) on Python floats (its twin: the same bits)."""
     n = float(round(u / c.quarter))
-    v = ((u - n * c.k_hi) - n * c.k_mid) + (u_lo - n * c.k_lo)
+    v, v_lo = _two_sum((u - n * c.k_hi) - n * c.k_mid, u_lo - n * c.k_lo)
     n = n + quarters
     if abs(n) >= _MAX_QUARTERS:
         raise ValueError(f"{name} is too large: the elliptic argument must stay below "
@@ -343,7 +372,7 @@ def evaluate_float(u, c, u_lo=0.0, amplitude=False, name="u", quarters=0.0):
         s, cn_v, dn_v, ratio = _f(np.tanh, v), sech_v, sech_v, c.kc * _f(np.sinh, v)
     else:
         mu, rho = c.mu, c.rho
-        cc = mu[-1] * _f(np.tan, v * c.scale)
+        cc = mu[-1] * phase_tangent(v, v_lo, c.scale, c.scale_lo, lambda x: _f(np.tan, x))
         d = 1.0
         for i in range(len(mu) - 2, -1, -1):
             r = cc * cc / mu[i + 1]
@@ -358,6 +387,8 @@ def evaluate_float(u, c, u_lo=0.0, amplitude=False, name="u", quarters=0.0):
     sn = sign * (cn_v / dn_v if odd else s)
     cn = sign * (-c.kc * s / dn_v if odd else cn_v)
     dn = c.kc / dn_v if odd else dn_v
+    if careful and _TINY_KC <= c.kc < _careful.SMALL_KC:
+        sn, cn, dn, s, cn_v, ratio = _careful.values_float(q, v, v_lo, c)
     if not amplitude:
         return sn, cn, dn, None
     y, x = (ratio, 1.0) if odd else (ratio, c.kc)
