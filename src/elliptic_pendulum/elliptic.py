@@ -269,8 +269,12 @@ def jacobi(u: npt.ArrayLike, k: npt.ArrayLike,
         if one is not None:
             return one[0], one[1], one[2]
     u = real_array(u, "u")
-    k, kc, kc_lo = modulus_pair(k, kc, beyond_one=True)
-    s, c, d, _ = _jacobi.values(u, k, kc, kc_lo)
+    if kc is None:  # kc from k, in pieces of many moduli
+        k = np.abs(real_array(k, "k"))
+        s, c, d, _ = _jacobi.values_of_moduli(u, k)
+    else:
+        k, kc, _ = modulus_pair(k, kc, beyond_one=True)
+        s, c, d, _ = _jacobi.values(u, k, kc, 0.0)
     # Shaped like every argument broadcast together, k too where kc (trusted over k) is given,
     # and a Python float only when all were scalars (the package's scalar_or_array rule).
     shape = np.broadcast_shapes(u.shape, k.shape, np.shape(kc))
@@ -406,8 +410,12 @@ def am(u: npt.ArrayLike, k: npt.ArrayLike, kc: npt.ArrayLike | None = None) -> F
         if one is not None:
             return one[3]
     u = real_array(u, "u")
-    k, kc, kc_lo = modulus_pair(k, kc, beyond_one=True)
-    a = _jacobi.values(u, k, kc, kc_lo, amplitude=True)[3]
+    if kc is None:  # kc from k, in pieces of many moduli
+        k = np.abs(real_array(k, "k"))
+        a = _jacobi.values_of_moduli(u, k, amplitude=True)[3]
+    else:
+        k, kc, _ = modulus_pair(k, kc, beyond_one=True)
+        a = _jacobi.values(u, k, kc, 0.0, amplitude=True)[3]
     shape = np.broadcast_shapes(u.shape, k.shape, np.shape(kc))  # as in jacobi()
     return scalar_or_array(a if a.shape == shape else np.array(np.broadcast_to(a, shape)),
                            u, k, kc)

@@ -24,7 +24,11 @@ import numpy as np
 from . import dd as _dd
 from . import landen as _landen
 
-__all__ = ["values"]
+__all__ = ["values", "values_of_moduli"]
+
+# Many moduli are done in pieces of this many elements, from kc to the result: every
+# temporary of the complement, the AGM and the recurrence then stays in the processor's cache.
+CHUNK = 2 ** 14
 
 
 def _ordinary(u, kc, kc_lo, amplitude, u_lo=0.0):
@@ -95,6 +99,30 @@ def values(u, k, kc, kc_lo, amplitude=False):
     """
     with np.errstate(under="ignore"):  # a subnormal or zero is the right answer there
         return _values(u, k, kc, kc_lo, amplitude)
+
+
+def values_of_moduli(u, k, amplitude=False):
+    """Compute :func:`values` for |k| given alone (kc from k, as modulus_pair forms it).
+
+    Many moduli at once go in pieces of CHUNK elements, each from its complement to its
+    result (each element's bits are those of one call on the whole array: nothing here
+    looks across elements).
+    """
+    shape = np.broadcast_shapes(u.shape, k.shape)
+    size = math.prod(shape)
+    if k.ndim == 0 or size <= CHUNK:
+        return values(u, k, *_landen.complement(np.minimum(k, 1.0)), amplitude)
+    flat_u = np.broadcast_to(u, shape).ravel()
+    flat_k = np.broadcast_to(k, shape).ravel()
+    outs = [np.empty(size) for _ in range(4 if amplitude else 3)]
+    for i in range(0, size, CHUNK):
+        piece = slice(i, i + CHUNK)
+        kk = flat_k[piece]
+        got = values(flat_u[piece], kk, *_landen.complement(np.minimum(kk, 1.0)), amplitude)
+        for out, x in zip(outs, got, strict=False):
+            out[piece] = x
+    result = [out.reshape(shape) for out in outs]
+    return result[0], result[1], result[2], result[3] if amplitude else None
 
 
 def _values(u, k, kc, kc_lo, amplitude):
