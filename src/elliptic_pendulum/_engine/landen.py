@@ -125,43 +125,56 @@ def _piece(kc: Any, kc_lo: Any) -> Constants:
     up in sn(u) ~ u: 4.7 ulp at u = 3e-8 on GSL's rows). An element gets the same bits alone
     or beside a slower modulus (no dependence on the batch).
     """
+    shape = kc.shape
     top = kc == 0  # the separatrix: K = inf; run the AGM on a harmless stand-in
-    kc_lo = np.where(top, 0.0, kc_lo)
-    kc = np.where(top, 1.0, kc)
-    ah, al = np.ones_like(kc), np.zeros_like(kc)
+    kc_lo = np.where(top, 0.0, kc_lo).ravel()
+    kc = np.where(top, 1.0, kc).ravel()
+    size = kc.size
+    # The elements still iterating, by index (the others have their M): each step works on
+    # those alone, with the same operations as on the whole piece (the same bits).
+    idx = np.arange(size)
+    ah, al = np.ones(size), np.zeros(size)
     bh, bl = _fast_two_sum(kc, kc_lo)
-    mu, rho, stops = [ah], [bh], []
-    done = np.zeros(kc.shape, dtype=bool)
-    mh, ml = ah, al
+    mu, rho, stop = [ah], [bh], np.zeros(size)  # stop: the level N of each element
+    mh, ml = np.empty(size), np.empty(size)
     # rho_1 ... rho_j in double-double (ph, pl), and its value where an element stopped (qh, ql)
-    ph, pl = np.ones_like(kc), np.zeros_like(kc)
-    qh, ql = ph, pl
-    for _ in range(60):  # 12 steps at kc = 1e-300; the cap guards a bug
+    ph, pl = np.ones(size), np.zeros(size)
+    qh, ql = np.empty(size), np.empty(size)
+    for level in range(1, 61):  # 12 steps at kc = 1e-300; the cap guards a bug
         dh, dl = _two_sum(ah, -bh)
         diff = dh + (dl + (al - bl))  # a - b >= 0
         sh, sl = _two_sum(ah, bh)
         ch, cl = _fast_two_sum(0.5 * sh, 0.5 * (sl + al + bl))  # c = (a + b)/2
-        near = ~done & (diff <= _NEAR * ah)
+        near = diff <= _NEAR * ah
         r = diff / sh
         nh, nl = _fast_two_sum(ch, cl - ch * (0.25 * r * r))  # M = c (1 - r^2/4)
-        mh, ml = np.where(near, nh, mh), np.where(near, nl, ml)
-        qh, ql = np.where(near, ph, qh), np.where(near, pl, ql)
-        done = done | near
-        mu.append(ch)  # where done, the last level: a_N is set below
-        stops.append(done)
-        if np.all(done):
-            rho.append(np.ones_like(kc))
+        here = idx[near]
+        mh[here], ml[here], qh[here], ql[here] = nh[near], nl[near], ph[near], pl[near]
+        stop[here] = level
+        a_level = np.empty(size)  # where stopped, the last level: a_N is set below
+        a_level[idx] = ch
+        mu.append(a_level)
+        go = ~near
+        if not np.any(go):
+            rho.append(np.ones(size))
             break
+        if not np.all(go):
+            idx, ah, al, bh, bl, ch, cl, ph, pl = (x[go] for x in (idx, ah, al, bh, bl, ch, cl,
+                                                                   ph, pl))
         xh, xl = _dd.mul(ah, al, bh, bl)
         bh, bl = _dd.sqrt(xh, xl, np.sqrt)
         ah, al = ch, cl
         ratio = _dd.div(bh, bl, ah, al)[0]
-        ph, pl = _dd.mul(ph, pl, ratio, 0.0 * ratio)
-        rho.append(np.where(done, 1.0, ratio))
+        ph, pl = _dd.mul_d(ph, pl, ratio)
+        rho_level = np.ones(size)
+        rho_level[idx] = ratio
+        rho.append(rho_level)
     else:
         raise RuntimeError("AGM did not converge")
     last = _dd.div(kc, 0.0 * kc, *_dd.mul(mh, ml, qh, ql))[0]  # a_N = kc / (M rho_1 ...)
-    mu = [mu[0], *(np.where(stop, last, a) for a, stop in zip(mu[1:], stops, strict=True))]
+    mu = [mu[0], *(np.where(stop <= n, last, a) for n, a in enumerate(mu[1:], 1))]
+    mu, rho = [x.reshape(shape) for x in mu], [x.reshape(shape) for x in rho]
+    kc, mh, ml = kc.reshape(shape), mh.reshape(shape), ml.reshape(shape)
     kh, kl = _dd.div(0.5 * _PI_HI + 0.0 * mh, 0.5 * _PI_LO + 0.0 * mh, mh, ml)
     k_hi = _chop(kh)
     k_mid = _chop(kh - k_hi + kl)
@@ -193,7 +206,7 @@ def _constants_float(kc: float, kc_lo: float) -> Constants:
         bh, bl = _dd.sqrt(xh, xl, math.sqrt)
         ah, al = ch, cl
         ratio = _dd.div(bh, bl, ah, al)[0]
-        ph, pl = _dd.mul(ph, pl, ratio, 0.0 * ratio)
+        ph, pl = _dd.mul_d(ph, pl, ratio)
         mu.append(ah)
         rho.append(ratio)
     kh, kl = _dd.div(0.5 * _PI_HI + 0.0 * mh, 0.5 * _PI_LO + 0.0 * mh, mh, ml)
