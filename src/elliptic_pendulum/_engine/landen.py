@@ -47,16 +47,20 @@ __all__ = ["SCALARS", "Constants", "complement", "constants", "constants_float",
            "_constants_float", "_two_prod", "_two_sum"]
 
 
-def reduce(u, c: Constants, u_lo=0.0, quarters=0.0):
+def reduce(u, c: Constants, u_lo=0.0, quarters=0.0, split=True):
     """Split u (+ u_lo) + quarters K = n K + v with n an integer-valued float, |v| <= K/2.
 
     ``quarters`` (whole quarter periods) lets a caller hold an argument as a multiple of K
     plus an exact remainder: the remainder then keeps its relative accuracy at t = 0.
     Returns (n mod 4 as float, n, v, v_lo): v + v_lo is the remainder as a double-double
-    (the first two products are exact, the rest is rounded far below v's last bit).
+    (the first two products are exact, the rest is rounded far below v's last bit); without
+    ``split``, v alone (the same v) and v_lo None.
     """
     n = np.rint(u / c.quarter)
-    v, v_lo = _two_sum((u - n * c.k_hi) - n * c.k_mid, u_lo - n * c.k_lo)
+    if split:
+        v, v_lo = _two_sum((u - n * c.k_hi) - n * c.k_mid, u_lo - n * c.k_lo)
+    else:
+        v, v_lo = ((u - n * c.k_hi) - n * c.k_mid) + (u_lo - n * c.k_lo), None
     n = n + quarters
     return np.mod(n, 4.0), n, v, v_lo
 
@@ -82,13 +86,17 @@ def phase_tangent(v, v_lo, scale, scale_lo, tan):
     return t + e * (1.0 + t * t)
 
 
-def core(v, c: Constants, v_lo=0.0):
+def core(v, c: Constants, v_lo=None):
     """sn, cn, dn and kc sc at |v| <= K/2 (plus a hair) by the descending Landen recurrence.
 
     Relative accuracy: every operation after the tangent multiplies or
-    divides positive numbers or adds numbers of one sign.
+    divides positive numbers or adds numbers of one sign. With ``v_lo`` (the remainder's
+    low part) the phase is a double-double (:func:`phase_tangent`); without, v M rounded.
     """
-    t = phase_tangent(v, v_lo, c.scale, c.scale_lo, np.tan)
+    if v_lo is None:
+        t = np.tan(v * c.scale)
+    else:
+        t = phase_tangent(v, v_lo, c.scale, c.scale_lo, np.tan)
     mu, rho = c.mu, c.rho
     cc = mu[-1] * t
     d = 1.0
@@ -122,10 +130,11 @@ def evaluate(u, c: Constants, u_lo=0.0, amplitude: bool | str = False, name: str
     and sn, cn change sign under v -> v + 2K. The reduction is exact for fewer
     than 2**26 quarter periods; beyond, a ValueError names the argument
     (``name``) rather than returning digits that are not there. With ``careful`` the
-    elements with kc below 1/16 take the double-double recurrence of :mod:`.careful`
-    (the public Jacobi functions: within 4 ulp there; a motion's theta(t) does without).
+    elements with kc below 1/16 take the double-double recurrence of :mod:`.careful` and
+    every element a double-double phase (the public Jacobi functions: within 4 ulp on the
+    Boost/GSL rows); a motion's theta(t) does without (and keeps its speed).
     """
-    q, n, v, v_lo = reduce(u, c, u_lo, quarters)
+    q, n, v, v_lo = reduce(u, c, u_lo, quarters, split=careful)
     if np.any(np.abs(n) >= _MAX_QUARTERS):
         raise ValueError(f"{name} is too large: the elliptic argument must stay below "
                          "2**26 quarter periods (about 6.7e7 K1) for an exact reduction")
@@ -165,7 +174,10 @@ def _f(ufunc, *args):
 def evaluate_float(u, c, u_lo=0.0, amplitude=False, name="u", quarters=0.0, careful=False):
     """Compute :func:`evaluate` of one u (kc > 0) on Python floats (its twin: the same bits)."""
     n = float(round(u / c.quarter))
-    v, v_lo = _two_sum((u - n * c.k_hi) - n * c.k_mid, u_lo - n * c.k_lo)
+    if careful:
+        v, v_lo = _two_sum((u - n * c.k_hi) - n * c.k_mid, u_lo - n * c.k_lo)
+    else:
+        v = ((u - n * c.k_hi) - n * c.k_mid) + (u_lo - n * c.k_lo)
     n = n + quarters
     if abs(n) >= _MAX_QUARTERS:
         raise ValueError(f"{name} is too large: the elliptic argument must stay below "
@@ -176,7 +188,10 @@ def evaluate_float(u, c, u_lo=0.0, amplitude=False, name="u", quarters=0.0, care
         s, cn_v, dn_v, ratio = _f(np.tanh, v), sech_v, sech_v, c.kc * _f(np.sinh, v)
     else:
         mu, rho = c.mu, c.rho
-        cc = mu[-1] * phase_tangent(v, v_lo, c.scale, c.scale_lo, lambda x: _f(np.tan, x))
+        if careful:
+            cc = mu[-1] * phase_tangent(v, v_lo, c.scale, c.scale_lo, lambda x: _f(np.tan, x))
+        else:
+            cc = mu[-1] * _f(np.tan, v * c.scale)
         d = 1.0
         for i in range(len(mu) - 2, -1, -1):
             r = cc * cc / mu[i + 1]
