@@ -104,21 +104,24 @@ def values(u, k, kc, kc_lo, amplitude=False):
 def values_of_moduli(u, k, amplitude=False):
     """Compute :func:`values` for |k| given alone (kc from k, as modulus_pair forms it).
 
-    Many moduli at once go in pieces of CHUNK elements, each from its complement to its
-    result (each element's bits are those of one call on the whole array: nothing here
-    looks across elements).
+    Many elements at once go in pieces of CHUNK, each from its complement (one for one
+    modulus) to its result (each element's bits are those of one call on the whole array:
+    nothing here looks across elements).
     """
     shape = np.broadcast_shapes(u.shape, k.shape)
     size = math.prod(shape)
-    if k.ndim == 0 or size <= CHUNK:
+    if size <= CHUNK:
         return values(u, k, *_landen.complement(np.minimum(k, 1.0)), amplitude)
     flat_u = np.broadcast_to(u, shape).ravel()
-    flat_k = np.broadcast_to(k, shape).ravel()
+    one = k.ndim == 0  # one modulus: its kc once, and u in pieces
+    flat_k = k if one else np.broadcast_to(k, shape).ravel()
+    pair = _landen.complement(np.minimum(k, 1.0)) if one else None
     outs = [np.empty(size) for _ in range(4 if amplitude else 3)]
     for i in range(0, size, CHUNK):
         piece = slice(i, i + CHUNK)
-        kk = flat_k[piece]
-        got = values(flat_u[piece], kk, *_landen.complement(np.minimum(kk, 1.0)), amplitude)
+        kk = flat_k if one else flat_k[piece]
+        kc = pair if pair is not None else _landen.complement(np.minimum(kk, 1.0))
+        got = values(flat_u[piece], kk, *kc, amplitude)
         for out, x in zip(outs, got, strict=False):
             out[piece] = x
     result = [out.reshape(shape) for out in outs]
