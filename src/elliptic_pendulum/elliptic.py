@@ -269,13 +269,21 @@ def jacobi(u: npt.ArrayLike, k: npt.ArrayLike,
         if one is not None:
             return one[0], one[1], one[2]
     u = real_array(u, "u")
-    k, kc, kc_lo = modulus_pair(k, kc, beyond_one=True)
-    s, c, d, _ = _jacobi.values(u, k, kc, kc_lo)
+    (s, c, d, _), modulus, kc = _values(u, k, kc, False)
     # Shaped like every argument broadcast together, k too where kc (trusted over k) is given,
     # and a Python float only when all were scalars (the package's scalar_or_array rule).
-    shape = np.broadcast_shapes(u.shape, k.shape, np.shape(kc))
+    shape = np.broadcast_shapes(u.shape, modulus.shape, np.shape(kc))
     return tuple(scalar_or_array(x if x.shape == shape else np.array(np.broadcast_to(x, shape)),
-                                 u, k, kc) for x in (s, c, d))
+                                 u, modulus, kc) for x in (s, c, d))
+
+
+def _values(u: np.ndarray, k: npt.ArrayLike, kc: npt.ArrayLike | None, amplitude: bool):
+    """Return the kernel's (sn, cn, dn, am), |k| and kc as arrays (kc None: k alone, many)."""
+    if kc is None:
+        modulus = np.abs(real_array(k, "k"))
+        return _jacobi.values_of_moduli(u, modulus, amplitude), modulus, None
+    modulus, kc, _ = modulus_pair(k, kc, beyond_one=True)
+    return _jacobi.values(u, modulus, kc, 0.0, amplitude), modulus, kc
 
 
 def sn(u: npt.ArrayLike, k: npt.ArrayLike, kc: npt.ArrayLike | None = None) -> FloatOrArray:
@@ -406,8 +414,7 @@ def am(u: npt.ArrayLike, k: npt.ArrayLike, kc: npt.ArrayLike | None = None) -> F
         if one is not None:
             return one[3]
     u = real_array(u, "u")
-    k, kc, kc_lo = modulus_pair(k, kc, beyond_one=True)
-    a = _jacobi.values(u, k, kc, kc_lo, amplitude=True)[3]
-    shape = np.broadcast_shapes(u.shape, k.shape, np.shape(kc))  # as in jacobi()
+    (_, _, _, a), modulus, kc = _values(u, k, kc, True)
+    shape = np.broadcast_shapes(u.shape, modulus.shape, np.shape(kc))  # as in jacobi()
     return scalar_or_array(a if a.shape == shape else np.array(np.broadcast_to(a, shape)),
-                           u, k, kc)
+                           u, modulus, kc)

@@ -7,7 +7,9 @@ mpmath, in a private context, for the rare states beyond the double-double range
 Modules, from the bottom up (the design note of the reference site gives the invariants):
 
 * :mod:`.dd` -- double-double arithmetic (error-free sums and products, sqrt, sin/cos);
-* :mod:`.landen` -- the AGM / descending Landen constants and the Jacobi kernel on them;
+* :mod:`.agm` -- the AGM / descending Landen constants (K in double-double, the levels);
+* :mod:`.landen` -- the Jacobi kernel on them;
+* :mod:`.careful` -- that kernel in double-double arithmetic, for kc below 1/16;
 * :mod:`.quarter` -- K alone, in double precision, for many moduli at once;
 * :mod:`.jacobi` -- the edges of the Jacobi functions (k = 0, kc = 0, k > 1);
 * :mod:`.codes` -- the integer code of each regime;

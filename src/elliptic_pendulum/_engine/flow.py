@@ -52,12 +52,13 @@ _N = len(Params._fields) - 1  # the per-state arrays before the Landen constants
 
 def _pieces(p: Params) -> list[Any]:
     c = p.landen
-    return [*p[:_N], c.kc, c.quarter, c.k_hi, c.k_mid, c.k_lo, c.scale, *c.mu, *c.rho]
+    return [*p[:_N], c.kc, c.quarter, c.k_hi, c.k_mid, c.k_lo, c.scale, c.scale_lo, *c.mu, *c.rho]
 
 
 def _unpieces(pieces: list[Any], levels: int) -> Params:
-    c = _landen.Constants._make([*pieces[_N:_N + 6], tuple(pieces[_N + 6:_N + 6 + levels]),
-                                 tuple(pieces[_N + 6 + levels:])])
+    m = _N + _landen.SCALARS
+    c = _landen.Constants._make([*pieces[_N:m], tuple(pieces[m:m + levels]),
+                                 tuple(pieces[m + levels:])])
     return Params._make([*pieces[:_N], c])
 
 
@@ -231,7 +232,8 @@ def _direct(p: Params, t, tau, redo, theta):
         return np.broadcast_to(x, shape)[where]
 
     c = p.landen
-    landen = _landen.Constants._make([*(pick(x) for x in c[:6]), tuple(pick(x) for x in c.mu),
+    landen = _landen.Constants._make([*(pick(x) for x in c[:_landen.SCALARS]),
+                                      tuple(pick(x) for x in c.mu),
                                       tuple(pick(x) for x in c.rho)])
     u, u_lo = _two_sum(pick(tau[0]), pick(p.rem))
     u_lo = u_lo + pick(tau[1] + p.rate_lo * t)

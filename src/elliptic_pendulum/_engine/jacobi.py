@@ -24,7 +24,11 @@ import numpy as np
 from . import dd as _dd
 from . import landen as _landen
 
-__all__ = ["values"]
+__all__ = ["values", "values_of_moduli"]
+
+# Many moduli are done in pieces of this many elements, from kc to the result: every
+# temporary of the complement, the AGM and the recurrence then stays in the processor's cache.
+CHUNK = 2 ** 14
 
 
 def _ordinary(u, kc, kc_lo, amplitude, u_lo=0.0):
@@ -36,7 +40,7 @@ def _ordinary(u, kc, kc_lo, amplitude, u_lo=0.0):
     circular = (kc == 1) & (kc_lo == 0)
     edge = (kc == 0) | circular
     sn_, cn_, dn_, am_ = _landen.evaluate(np.where(edge, 0.0, u), c, np.where(edge, 0.0, u_lo),
-                                          amplitude=amplitude)
+                                          amplitude=amplitude, careful=True)
     if np.any(kc == 0):
         # kc = 0 is the separatrix: sn = tanh, cn = dn = sech, am = gd.
         sech = _landen.sech(u)
@@ -97,6 +101,33 @@ def values(u, k, kc, kc_lo, amplitude=False):
         return _values(u, k, kc, kc_lo, amplitude)
 
 
+def values_of_moduli(u, k, amplitude=False):
+    """Compute :func:`values` for |k| given alone (kc from k, as modulus_pair forms it).
+
+    Many elements at once go in pieces of CHUNK, each from its complement (one for one
+    modulus) to its result (each element's bits are those of one call on the whole array:
+    nothing here looks across elements).
+    """
+    shape = np.broadcast_shapes(u.shape, k.shape)
+    size = math.prod(shape)
+    if size <= CHUNK:
+        return values(u, k, *_landen.complement(np.minimum(k, 1.0)), amplitude)
+    flat_u = np.broadcast_to(u, shape).ravel()
+    one = k.ndim == 0  # one modulus: its kc once, and u in pieces
+    flat_k = k if one else np.broadcast_to(k, shape).ravel()
+    pair = _landen.complement(np.minimum(k, 1.0)) if one else None
+    outs = [np.empty(size) for _ in range(4 if amplitude else 3)]
+    for i in range(0, size, CHUNK):
+        piece = slice(i, i + CHUNK)
+        kk = flat_k if one else flat_k[piece]
+        kc = pair if pair is not None else _landen.complement(np.minimum(kk, 1.0))
+        got = values(flat_u[piece], kk, *kc, amplitude)
+        for out, x in zip(outs, got, strict=False):
+            out[piece] = x
+    result = [out.reshape(shape) for out in outs]
+    return result[0], result[1], result[2], result[3] if amplitude else None
+
+
 def _values(u, k, kc, kc_lo, amplitude):
     big = k > 1
     sn_, cn_, dn_, am_ = _ordinary(u, kc, kc_lo, amplitude)
@@ -123,4 +154,5 @@ def values_float(u: float, k: float, amplitude: bool = False):
     kc, kc_lo = _dd.sqrt(p, p_lo, math.sqrt)
     if kc == 1.0:
         return None  # k so small that kc rounds to 1: the circular edge, on the array path
-    return _landen.evaluate_float(u, _landen.constants_float(kc, kc_lo), amplitude=amplitude)
+    return _landen.evaluate_float(u, _landen.constants_float(kc, kc_lo), amplitude=amplitude,
+                                  careful=True)

@@ -132,7 +132,7 @@ def _solve(th, v, w0):
 
     public = [join([pub[j] for pub, _ in parts]) for j in range(len(parts[0][0]))]
     scalars = [join([p[j] for _, p in parts]) for j in range(len(_flow.Params._fields) - 1)]
-    c = [join([p.landen[j] for _, p in parts]) for j in range(6)]
+    c = [join([p.landen[j] for _, p in parts]) for j in range(_landen.SCALARS)]
     mu = [join(column) for column in zip(*(_pad(p.landen.mu, levels) for _, p in parts),
                                          strict=True)]
     rho = [join(column) for column in zip(*(_pad(p.landen.rho, levels) for _, p in parts),
@@ -201,7 +201,7 @@ def plain(values: list, p: _flow.Params) -> list:
     public = [regime, *(float(x) for x in values[1:9]), int(values[9]), float(values[10]),
               float(values[11])]
     c = p.landen
-    landen = _landen.Constants._make([*(float(x) for x in c[:6]),
+    landen = _landen.Constants._make([*(float(x) for x in c[:-2]),  # all but mu and rho
                                       tuple(float(x) for x in c.mu),
                                       tuple(float(x) for x in c.rho)])
     return [*public, _flow.Params._make([int(p.code), bool(p.still),
@@ -215,7 +215,8 @@ def pick(values: tuple, p: _flow.Params, shape: tuple, index) -> list:
         return np.broadcast_to(x, shape)[index]
 
     c = p.landen
-    landen = _landen.Constants._make([*(one(x) for x in c[:6]), tuple(one(x) for x in c.mu),
+    landen = _landen.Constants._make([*(one(x) for x in c[:_landen.SCALARS]),
+                                      tuple(one(x) for x in c.mu),
                                       tuple(one(x) for x in c.rho)])
     return plain([one(x) for x in values], _flow.Params._make([*(one(x) for x in p[:-1]),
                                                                landen]))
