@@ -360,10 +360,13 @@ def pages(html_dir: Path, *besides: str) -> list[Path]:
     """Every page of a build, its own _static, the screenshots and the folders ``besides``
     aside (the book's ``reference``: the docs build, looked at on its own)."""
     skip = {"_static", "_sources", "_screenshots", "_images", ".doctrees", *besides}
-    return [
-        p for p in sorted(html_dir.rglob("*.html"))
-        if not skip & set(p.relative_to(html_dir).parts)
-    ]
+    found = []
+    # Walked without entering the folders left aside: another build (the student site in
+    # student/) may be writing there while the survey starts.
+    for root, dirs, files in os.walk(html_dir):
+        dirs[:] = [d for d in dirs if d not in skip]
+        found += [Path(root) / f for f in files if f.endswith(".html")]
+    return sorted(found)
 
 
 # The book site holds the reference in reference/ (`make book`); it is looked at as "docs".

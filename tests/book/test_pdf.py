@@ -85,7 +85,7 @@ def _editions(titles: dict[str, str]) -> dict[str, Edition]:
     # code cells' toggles), Sphinx's own catalog (図, 目次), tools/pdf/build.py (the title page).
     japanese = Edition(
         "ja", [_translated(doc, t) for doc, t in titles.items() if doc != "index"],
-        "図 {}", "演習 {}", r"演習\s*\d+\s*の解答", "目次",
+        "図 {}", "演習 {}", r"演習\s*\d+\s*(\([^)]*\)\s*)?の解答", "目次",
         {"book-ja": "教員用（解答付き）", "book-student-ja": "学生用"},
         "本文と図：CC BY 4.0、コード：MIT",
         ("コードを表示", "コードを隠す", "\u25b6 を押すと再生", "クリップボードにコピー"))

@@ -149,18 +149,18 @@ MESSAGES = {
     "That is the ratio $P_8/P$; the fraction it is too short by is what is missing to 1.":
         "その値は比 $P_8/P$ である。短すぎる割合は、その比が 1 に足りない分である。",
     ("the release angle, in degrees, from which (8) is too short by more than 1 %, that is "
-     "$P/P_8 > 1.01$"):
-        "(8) の不足が 1 % を超える、すなわち $P/P_8 > 1.01$ となる放す角度の下限（度）",
+     "$1 - P_8/P > 0.01$"):
+        "(8) の不足が 1 % を超える、すなわち $1 - P_8/P > 0.01$ となる放す角度の下限（度）",
     "Give the angle in degrees.":
         "角度は度で答えること。",
     ("That is the two-term estimate $P/P_8 \\approx 1 + \\theta_0^2/16$; the exercise asks for "
      "the exact period's crossing."):
         ("その値は 2 項による見積もり $P/P_8 \\approx 1 + \\theta_0^2/16$ から求めた角度である。"
          "演習が求めているのは、厳密な周期が境目を越える角度である。"),
-    ("Did you solve $1 - P_8/P = 0.01$? The 1 % here is the exact period's excess over (8): "
-     "$P/P_8 = 1.01$."):
-        ("$1 - P_8/P = 0.01$ を解いていないか。ここでの 1 % は (8) "
-         "に対する厳密な周期の超過分であり、$P/P_8 = 1.01$ である。"),
+    ("Did you solve $P/P_8 = 1.01$? The 1 % here is the shortfall of (8) as a fraction of the "
+     "true period: $1 - P_8/P = 0.01$."):
+        ("$P/P_8 = 1.01$ を解いていないか。ここでの 1 % は、真の周期に対する (8) "
+         "の不足の割合であり、$1 - P_8/P = 0.01$ である。"),
     # in_motion.py
     ("the fraction of the time spent beyond half the amplitude, $|\\theta| > \\theta_0/2$, for "
      "$\\theta_0 = 2$ rad"):

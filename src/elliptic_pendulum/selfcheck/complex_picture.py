@@ -12,7 +12,7 @@ def agm_hand() -> dict[str, float]:
 
     with mpmath.workdps(30):
         m = mpmath.sin(mpmath.radians(75)) ** 2
-        return {"ratio": float(mpmath.ellipk(1 - m) / mpmath.ellipk(m))}
+        return {"hand": float(mpmath.ellipk(1 - m) / mpmath.ellipk(m))}
 
 
 register(
@@ -24,8 +24,10 @@ register(
     Exercise(
         "ex-complex-agm-hand",
         values=(
-            Value("ratio", "the ratio $K'/K$ for $k = \\sin 75^\\circ$, to four digits",
-                  rtol=2e-4, hidden_rtol=1e-8,
+            # The worked solution's three steps by hand hold four digits, no more: the
+            # hidden test asks what the exercise asks.
+            Value("hand", "the ratio $K'/K$ for $k = \\sin 75^\\circ$, to four digits",
+                  rtol=2e-4, hidden_rtol=2e-4,
                   hints=(Hint(lambda a, e: abs(a * e - 1) < 1e-3,
                               "That is $K/K'$: $K'$ comes from the mean that starts at "
                               "$k_c = \\cos 75^\\circ$, and $K = \\pi/(2\\operatorname{AGM}"

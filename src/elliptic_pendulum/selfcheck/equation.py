@@ -77,7 +77,8 @@ def period() -> dict[str, float]:
     low, high = 1.0, 90.0
     for _ in range(100):
         mid = (low + high) / 2
-        low, high = (mid, high) if ratio(math.radians(mid)) < 1.01 else (low, mid)
+        # the shortfall 1 - P_8/P reaches 0.01 where P/P_8 = 1/0.99
+        low, high = (mid, high) if ratio(math.radians(mid)) < 1 / 0.99 else (low, mid)
     return {"P30": P30, "short30": 1 - 1 / ratio(math.radians(30.0)),
             "one_percent": (low + high) / 2}
 
@@ -166,7 +167,7 @@ register(
                               "Give a fraction, not a percentage.",
                               lambda e: 100 * e))),
             Value("one_percent", "the release angle, in degrees, from which (8) is too short by "
-                  "more than 1 %, that is $P/P_8 > 1.01$", rtol=1e-6, hidden_rtol=1e-9,
+                  "more than 1 %, that is $1 - P_8/P > 0.01$", rtol=1e-6, hidden_rtol=1e-9,
                   hints=(Hint(lambda a, e: _near(a, math.radians(e), 1e-4),
                               "Give the angle in degrees.",
                               lambda e: math.radians(e)),
@@ -174,10 +175,10 @@ register(
                               "That is the two-term estimate $P/P_8 \\approx 1 + \\theta_0^2/16$; "
                               "the exercise asks for the exact period's crossing.",
                               lambda e: math.degrees(4 * math.sqrt(0.01))),
-                         Hint(lambda a, e: _near(a, _crossing(1 / 0.99), 1e-5),
-                              "Did you solve $1 - P_8/P = 0.01$? The 1 % here is the exact "
-                              "period's excess over (8): $P/P_8 = 1.01$.",
-                              lambda e: _crossing(1 / 0.99)))),
+                         Hint(lambda a, e: _near(a, _crossing(1.01), 1e-5),
+                              "Did you solve $P/P_8 = 1.01$? The 1 % here is the shortfall of "
+                              "(8) as a fraction of the true period: $1 - P_8/P = 0.01$.",
+                              lambda e: _crossing(1.01)))),
         ),
         reference=period,
     ),
