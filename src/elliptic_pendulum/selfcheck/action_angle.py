@@ -8,23 +8,21 @@ from functools import cache
 from ._core import Exercise, Hint, Value, register
 
 
-def _action_mp(theta0):
-    # J / (m ell^2 omega0) of a swing of amplitude theta0 (an mpf), by mpmath's tanh-sinh
-    # quadrature of the loop integral over the angle: four times the upper branch.
-    import mpmath
-
-    return 4 * mpmath.quad(lambda th: mpmath.sqrt(2 * mpmath.cos(th) - 2 * mpmath.cos(theta0)),
-                           [0, theta0]) / (2 * mpmath.pi)
-
-
 def small() -> dict[str, float]:
     # J by quadrature of the loop integral (not the closed form the exercise asks for); the
     # energy from the bottom is 2 sin^2(theta0/2) in units of m g ell.
     import mpmath
 
+    def action(theta0):
+        # J / (m ell^2 omega0) of a swing of amplitude theta0 (an mpf), by mpmath's
+        # tanh-sinh quadrature of the loop integral over the angle: four times the upper
+        # branch. (Inside each reference: nbgrader's hidden test pastes its source.)
+        return 4 * mpmath.quad(lambda th: mpmath.sqrt(2 * mpmath.cos(th) - 2 * mpmath.cos(theta0)),
+                               [0, theta0]) / (2 * mpmath.pi)
+
     with mpmath.workdps(30):
         x = mpmath.radians(30)
-        return {"small_error": float(abs(2 * mpmath.sin(x / 2) ** 2 / _action_mp(x) - 1))}
+        return {"small_error": float(abs(2 * mpmath.sin(x / 2) ** 2 / action(x) - 1))}
 
 
 def shorten() -> dict[str, float]:
@@ -32,9 +30,16 @@ def shorten() -> dict[str, float]:
     # root finder; the exercise asks for the closed form and a bracketing solver.
     import mpmath
 
+    def action(theta0):
+        # J / (m ell^2 omega0) of a swing of amplitude theta0 (an mpf), by mpmath's
+        # tanh-sinh quadrature of the loop integral over the angle: four times the upper
+        # branch. (Inside each reference: nbgrader's hidden test pastes its source.)
+        return 4 * mpmath.quad(lambda th: mpmath.sqrt(2 * mpmath.cos(th) - 2 * mpmath.cos(theta0)),
+                               [0, theta0]) / (2 * mpmath.pi)
+
     with mpmath.workdps(30):
-        target = 2 ** mpmath.mpf(1.5) * _action_mp(mpmath.radians(40))
-        root = mpmath.findroot(lambda x: _action_mp(x) - target, mpmath.radians(69))
+        target = 2 ** mpmath.mpf(1.5) * action(mpmath.radians(40))
+        root = mpmath.findroot(lambda x: action(x) - target, mpmath.radians(69))
         return {"theta_end": float(mpmath.degrees(root))}
 
 
@@ -43,10 +48,17 @@ def separatrix() -> dict[str, float]:
     # the swing's by quadrature of its loop.
     import mpmath
 
+    def action(theta0):
+        # J / (m ell^2 omega0) of a swing of amplitude theta0 (an mpf), by mpmath's
+        # tanh-sinh quadrature of the loop integral over the angle: four times the upper
+        # branch. (Inside each reference: nbgrader's hidden test pastes its source.)
+        return 4 * mpmath.quad(lambda th: mpmath.sqrt(2 * mpmath.cos(th) - 2 * mpmath.cos(theta0)),
+                               [0, theta0]) / (2 * mpmath.pi)
+
     with mpmath.workdps(30):
         eye = 2 * mpmath.quad(lambda th: 2 * mpmath.cos(th / 2), [-mpmath.pi, mpmath.pi])
         eye /= 2 * mpmath.pi
-        return {"ell_ratio": float((_action_mp(mpmath.pi / 2) / eye) ** (mpmath.mpf(2) / 3))}
+        return {"ell_ratio": float((action(mpmath.pi / 2) / eye) ** (mpmath.mpf(2) / 3))}
 
 
 @cache
