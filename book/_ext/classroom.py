@@ -230,6 +230,10 @@ def _builder_inited(app: Sphinx) -> None:
         config = dict(app.config.mathjax3_config or {})
         config["chtml"] = {**config.get("chtml", {}), "mtextInheritFont": True}
         app.config.mathjax3_config = config
+        # The single page writes no search index (Sphinx's singlehtml has no search page),
+        # but would still feed every word to the indexer: for the Japanese edition a
+        # segmenter run on the whole book, ten seconds of nothing.
+        app.builder.search = False  # type: ignore[attr-defined]
     if app.builder.name != "html" and app.builder.format == "html":
         own = handlers.setdefault(app.builder.name, {})
         for node, visitors in handlers.get("html", {}).items():

@@ -31,6 +31,11 @@ here:
   with ``_()``.
 * The animation player's controls (matplotlib's ``to_jshtml``), which are interface inside
   an output: their titles and labels in the page's language.
+* Each translated message is parsed as a document of its own, whose settings hold the whole
+  build environment; the text nodes taken from it keep a reference to that document, so
+  every pickled doctree carried a copy of the environment (10 MB a page instead of a few
+  hundred kB, and a second to load each time a later build or the PDF reads it). The
+  references are dropped once the page is read: a node without one asks its parent.
 """
 
 from __future__ import annotations
@@ -309,6 +314,16 @@ def _drop_executed_notebooks(app: Sphinx, exception: BaseException | None) -> No
         shutil.rmtree(folder)
 
 
+def _forget_message_documents(app: Sphinx, doctree: nodes.document) -> None:
+    """Drop the nodes' references to their translated messages' own documents.
+
+    See the module's docstring; ``node.document`` then finds the page's own.
+    """
+    for node in doctree.findall():
+        if vars(node).get("_document") not in (None, doctree):
+            node._document = None
+
+
 def setup(app: Sphinx) -> dict[str, Any]:
     """Register the parser, transforms and hooks.
 
@@ -324,5 +339,6 @@ def setup(app: Sphinx) -> dict[str, Any]:
         app.add_message_catalog("sphinx", str(PACKAGES))
     app.connect("config-inited", _configure)
     app.connect("html-page-context", _language_links)
+    app.connect("doctree-read", _forget_message_documents)
     app.connect("build-finished", _drop_executed_notebooks, priority=900)
     return {"parallel_read_safe": True, "parallel_write_safe": True}

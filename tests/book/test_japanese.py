@@ -104,6 +104,29 @@ def test_the_japanese_edition_builds_strictly_and_executes_nothing(book_ja_build
     assert "Executing notebook" not in book_ja_build.output
 
 
+def test_the_japanese_doctrees_hold_no_message_documents(book_ja_build: Build) -> None:
+    # Sphinx parses each translated message as a document of its own, whose settings hold the
+    # build environment; text nodes kept a reference to it, and every pickled page carried
+    # the environment (10 MB a page, a second to load for each later build and the PDFs).
+    # book/_ext/i18n.py drops the references: here, none is left, and a page weighs about
+    # what the English one does.
+    import pickle
+
+    from docutils import nodes
+
+    doctrees = _ok(book_ja_build).parents[1] / "doctrees"
+    pages = sorted((doctrees / "book-ja").glob("*.doctree"))
+    assert len(pages) > 20
+    for page in pages:
+        tree = pickle.loads(page.read_bytes())
+        foreign = [node for node in tree.findall()
+                   if isinstance(vars(node).get("_document"), nodes.document)
+                   and node._document is not tree]
+        assert foreign == [], (page.name, foreign[:3])
+        english = doctrees / "book" / page.name
+        assert page.stat().st_size < 3 * english.stat().st_size + 100_000, page.name
+
+
 def test_the_student_edition_in_japanese_builds_strictly(student_ja_build: Build) -> None:
     site = _ok(student_ja_build)
     assert student_ja_build.warnings == []
