@@ -226,7 +226,8 @@ class Say:
 
     def __call__(self, english: str, /, **fields: Any) -> str:
         text = english
-        if self.language != "en":
+        # "" is no message (a gettext catalog keeps its header there).
+        if self.language != "en" and english:
             found = self.extra(english)
             text = found if found is not None else self.messages.get(english, english)
         return text.format(**fields) if fields else text
