@@ -67,7 +67,8 @@ def check_translation(english: str, japanese: str) -> None:
     assert placeholders(japanese) == placeholders(english)
     assert Counter(MATH.findall(japanese)) == Counter(MATH.findall(english))
     assert Counter(re.findall(r"`[^`]*`", japanese)) == Counter(re.findall(r"`[^`]*`", english))
-    assert japanese.count("|") == english.count("|")
+    if english.startswith("|"):  # a table's row: the same columns
+        assert japanese.count("|") == english.count("|")
     assert JAPANESE.search(prose(japanese)), "no Japanese outside the formulas"
     assert english_runs(japanese) == []
     assert japanese == japanese.strip() and "  " not in japanese

@@ -200,7 +200,8 @@ def markdown_other(checks: list[Check], *, language: str | None = None) -> str:
                 "|---|---|---|---|"]
         for c in found:
             where = f"[{say(c.section)}]({c.page}.md#{c.anchor})" if c.anchor else say(c.section)
-            label = say(c.claim or c.name or "(unnamed)").replace("|", "\\|")
+            label = (say(c.claim or c.name) if c.claim or c.name
+                     else say("(unnamed)")).replace("|", "\\|")
             mutant = say(c.mutant).replace("|", "\\|") or say("none")
             out.append(f"| {label} | {say(c.kind)} | {mutant} | {where} |")
         out.append("")

@@ -98,8 +98,8 @@ class Verdict:
     def _repr_markdown_(self) -> str:
         line = f"✔ **{self.claim}** {_unbroken(self._sentence())}"
         if self.details:
-            summary = _say(self.language)("How it was checked")
-            line += (f"\n\n<details><summary>{summary}</summary>\n\n"
+            say = _say(self.language)
+            line += (f"\n\n<details><summary>{say('How it was checked')}</summary>\n\n"
                      f"{_unbroken(self.details)}\n\n</details>")
         if not self.display:
             return line
