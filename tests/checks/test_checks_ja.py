@@ -60,7 +60,10 @@ def test_each_translation_keeps_placeholders_and_formulas(english, japanese) -> 
 
 # The texts the calls below pass in, as a book's catalog would translate them.
 CALLERS = {"one period": "1 周期", "4 pi": "4π", "max relative error": "最大相対誤差",
-           "xi stays in [-1, 1]": "ξ は [-1, 1] にとどまる"}
+           "xi stays in [-1, 1]": "ξ は [-1, 1] にとどまる", "§3, case II": "§3、場合 II",
+           "over {n} rotations, theta' >= {closest:.6f}":
+               "{n} 回の回転にわたって theta' >= {closest:.6f}",
+           "{n} swings": "{n} 回の振動"}
 
 
 @pytest.fixture
@@ -96,6 +99,10 @@ def _verdicts(language):
         verify.numeric("(8)", _period_error, lambda: 2 * math.pi, tol=1e-12, over="one period",
                        language=language),
         verify.fact("(14)", True, "xi stays in [-1, 1]", language=language),
+        verify.fact("§3, case II", True, "over {n} rotations, theta' >= {closest:.6f}",
+                    values={"n": 12, "closest": 0.5}, language=language),
+        verify.numeric("(8)", _period_error, lambda: 2 * math.pi, tol=1e-12, over="{n} swings",
+                       values={"n": 20}, language=language),
     ]
 
 
@@ -146,7 +153,7 @@ def test_english_is_as_before(catalog) -> None:
     assert " points of it. Beyond it the statement is false: at $" in domain.details
     assert domain.details.endswith(", is rejected: sympy does not reduce it to 0.")
     assert str(worded).startswith("✔ (28) holds for all real $t$: sympy reduces")
-    arithmetic, named, unnamed, bare, fact = rest
+    arithmetic, named, unnamed, bare, fact, templated, counted = rest
     assert str(arithmetic).endswith(
         "follows by arithmetic: sympy evaluates both sides to the same value.")
     assert str(named) == "✔ (8) holds: max |residual| 0 over one period."
@@ -157,7 +164,20 @@ def test_english_is_as_before(catalog) -> None:
         " A wrong version, a changed formula, is rejected: its max relative error is 6.3.")
     assert bare.details.endswith("1.0e-12. No wrong version is tried.")
     assert str(fact) == "✔ (14) xi stays in [-1, 1]."
+    # A template with values reads as the f-string it replaces.
+    assert str(templated) == f"✔ §3, case II over {12} rotations, theta' >= {0.5:.6f}."
+    assert templated.claim == "§3, case II"
+    assert str(counted) == f"✔ (8) holds: max |residual| 0 over {20} swings."
     assert "<summary>How it was checked</summary>" in named._repr_markdown_()
+
+
+def test_a_claim_and_a_template_in_japanese(catalog) -> None:
+    *_, templated, counted = _verdicts("ja")
+    assert str(templated) == "✔ §3、場合 II 12 回の回転にわたって theta' >= 0.500000。"
+    assert templated.claim == "§3, case II"  # the literal the registry reads
+    assert templated._repr_markdown_().startswith("✔ **§3、場合 II**")
+    assert str(counted) == ("✔ (8) は成り立つ。20 回の振動にわたって、残差の絶対値の最大値は "
+                            "0 である。")
 
 
 # --- the registry -------------------------------------------------------------------------

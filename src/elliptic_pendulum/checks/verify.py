@@ -34,7 +34,10 @@ call; a language without messages gives English. The module's own sentences are 
 ``mutant_label``, an identity's ``mutant_label`` and ``domain_md``) are looked up, exact
 English to its translation, in the catalog that the environment variable
 ``ELLIPTIC_PENDULUM_MESSAGES`` names (a gettext ``.po`` or ``.mo`` file; several separated by
-``os.pathsep``), read at the call; a text it does not hold stays English. So the book's
+``os.pathsep``), read at the call; a text it does not hold stays English. So is the claim as
+the verdict shows it ("§3, case II"), while ``Verdict.claim`` stays the literal. A text with
+a number computed in the cell is passed as a template with its ``values``, so that one
+catalog entry serves every value. So the book's
 Japanese edition translates its cells' fragments in a catalog of its own, and runs the same
 cells::
 
@@ -47,7 +50,7 @@ package's ``_i18n`` (standard library only).
 from __future__ import annotations
 
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any, Protocol
 
@@ -81,10 +84,13 @@ class Verdict:
     details: str = ""
     # The language of text and details, for the words the displays add ("How it was checked").
     language: str = "en"
+    # The claim as the reader sees it, in that language ("" when it is ``claim`` itself);
+    # ``claim`` stays the book's literal, which the registry reads from the pages' sources.
+    shown: str = ""
 
     def __str__(self) -> str:
         """Return the verdict's sentence as plain text."""
-        return f"✔ {self.claim} {self._sentence()}"
+        return f"✔ {self.shown or self.claim} {self._sentence()}"
 
     def _sentence(self) -> str:
         if self.text.endswith((".", "!", "?", "。")):
@@ -96,7 +102,7 @@ class Verdict:
         return str(self)
 
     def _repr_markdown_(self) -> str:
-        line = f"✔ **{self.claim}** {_unbroken(self._sentence())}"
+        line = f"✔ **{self.shown or self.claim}** {_unbroken(self._sentence())}"
         if self.details:
             say = _say(self.language)
             line += (f"\n\n<details><summary>{say('How it was checked')}</summary>\n\n"
@@ -216,7 +222,13 @@ def identity(ident: _Identity, *, show: bool = False, language: str | None = Non
     else:
         details.append(say("No wrong version is tried."))
     return Verdict(ident.equation, kind, text, ident.latex() if show else "",
-                   say.sentences(details), say.language)
+                   say.sentences(details), say.language, _shown(say, ident.equation))
+
+
+def _shown(say: Say, claim: str) -> str:
+    """Return the claim in the reader's language, or "" when it reads the same."""
+    shown = say(claim)
+    return "" if shown == claim else shown
 
 
 def _tex(x: Any) -> str:
@@ -236,6 +248,7 @@ def numeric(
     over: str,
     mutant_label: str = "",
     measure: str = "max |residual|",
+    values: Mapping[str, Any] | None = None,
     language: str | None = None,
 ) -> Verdict:
     r"""Assert ``residual(formula) <= tol < residual(mutant)``; return the verdict.
@@ -258,6 +271,10 @@ def numeric(
         The mutant as the reader would write it, e.g. ``"$8K_1/\omega_0$"``.
     measure : str
         What the residual is, for the verdict line.
+    values : mapping, optional
+        Makes ``over``, ``mutant_label`` and ``measure`` templates (``str.format``; a literal
+        brace is ``{{``), filled with these values after translation, so that a catalog
+        translates "{n} swings" once for every n: ``over="{n} swings", values={"n": 20}``.
     language : str, optional
         The language of the verdict ("en", "ja"); by default the environment's. ``over``,
         ``mutant_label`` and ``measure`` are looked up in the catalog of the environment (see
@@ -284,11 +301,12 @@ def numeric(
     AssertionError: (8): max |residual| 3.7 > tolerance 1e-12
     """
     say = _say(language)
+    fill = dict(values or {})
     err = float(residual(formula))
     _require(err <= tol, f"{claim}: {measure} {err:.3g} > tolerance {tol:.1g}")
-    measured = say(measure)
+    measured = say(measure, **fill)
     text = say("holds: {measure} {error} over {over}", measure=measured, error=_fmt(err),
-               over=say(over))
+               over=say(over, **fill))
     details = [say("Measured against an independent computation; the tolerance is "
                    "{tolerance}.", tolerance=_fmt(tol))]
     if mutant is not None:
@@ -296,7 +314,7 @@ def numeric(
         _require(not bad <= tol, f"{claim}: the mutant passes too ({measure} {bad:.3g})")
         if mutant_label:
             details.append(say("A wrong version, {label}, is rejected: its {measure} is "
-                               "{error}.", label=say(mutant_label), measure=measured,
+                               "{error}.", label=say(mutant_label, **fill), measure=measured,
                                error=_fmt(bad)))
         else:
             details.append(say("A wrong version, a changed formula, is rejected: its {measure} "
@@ -305,20 +323,24 @@ def numeric(
         # Said, so that a reader sees the check is the weaker kind.
         details.append(say("No wrong version is tried."))
     return Verdict(claim, "numerical", text, details=say.sentences(details),
-                   language=say.language)
+                   language=say.language, shown=_shown(say, claim))
 
 
-def fact(claim: str, ok: bool, text: str, *, language: str | None = None) -> Verdict:
+def fact(claim: str, ok: bool, text: str, *, values: Mapping[str, Any] | None = None,
+         language: str | None = None) -> Verdict:
     """Assert a numerical fact and return it as a verdict.
 
     ``text`` is written in ``language`` (by default the environment's) when the catalog of the
-    environment has it (see the module's description), else as given.
+    environment has it (see the module's description), else as given. With ``values`` it is
+    a template (``str.format``), filled after translation: ``fact("(30)", ok, "over {n}
+    rotations", values={"n": n})`` needs one catalog entry for every n.
 
     Examples
     --------
     >>> fact("(14)", -1 <= 0.3 <= 1, "xi stays in [-1, 1]")
     ✔ (14) xi stays in [-1, 1].
     """
-    _require(ok, f"{claim}: not so: {text}")
     say = _say(language)
-    return Verdict(claim, "numerical fact", say(text), language=say.language)
+    _require(ok, f"{claim}: not so: {text.format(**values) if values else text}")
+    return Verdict(claim, "numerical fact", say(text, **(values or {})), language=say.language,
+                   shown=_shown(say, claim))
