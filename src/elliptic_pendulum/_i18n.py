@@ -158,7 +158,7 @@ def read_po(text: str) -> tuple[dict[str, str], str]:
     return messages, _code(found.group(1)) if found else ""
 
 
-@lru_cache(maxsize=16)
+@lru_cache(maxsize=64)
 def _read_catalog(path: str, mtime_ns: int, size: int) -> tuple[Callable[[str], str | None], str]:
     # Keyed by the file's modification time and size: an edited catalog is read again.
     del mtime_ns, size

@@ -271,7 +271,7 @@ def numeric(
         The mutant as the reader would write it, e.g. ``"$8K_1/\omega_0$"``.
     measure : str
         What the residual is, for the verdict line.
-    values : mapping, optional
+    values : dict, optional
         Makes ``over``, ``mutant_label`` and ``measure`` templates (``str.format``; a literal
         brace is ``{{``), filled with these values after translation, so that a catalog
         translates "{n} swings" once for every n: ``over="{n} swings", values={"n": 20}``.

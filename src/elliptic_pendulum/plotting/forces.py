@@ -6,7 +6,7 @@ circle again after the jerk (:func:`plot_string_flight`); the phase plane shaded
 string does (:func:`plot_string_phase_plane`). Like every figure of
 :mod:`elliptic_pendulum.plotting`, which re-exports them, each takes an optional ``ax``,
 returns it, and changes no rcParams; each writes its words in ``language`` (None: the
-environment's; see :mod:`._words`).
+environment's; see ``plotting/_words.py``).
 """
 
 from __future__ import annotations

@@ -5,7 +5,7 @@ The functions of sections 3 and 5 (sn, cn, dn with :func:`plot_jacobi`, E1 with
 :func:`plot_amplitude`), and Lemma 2's extensions (20) and (21) (:func:`plot_extension`).
 Like every figure of :mod:`elliptic_pendulum.plotting`, which re-exports them, each takes an
 optional ``ax``, returns it, and changes no rcParams; each writes its words in
-``language`` (None: the environment's; see :mod:`._words`).
+``language`` (None: the environment's; see ``plotting/_words.py``).
 """
 
 from __future__ import annotations

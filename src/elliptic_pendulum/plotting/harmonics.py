@@ -5,7 +5,7 @@ The period ratio R(θ0) with its crossings and its logarithmic growth near the t
 (:func:`plot_approximation_error`) and the harmonics of a swing (:func:`plot_harmonics`).
 Like every figure of :mod:`elliptic_pendulum.plotting`, which re-exports them, each takes an
 optional ``ax`` (or ``axes``), returns it, and changes no rcParams; each writes its words
-in ``language`` (None: the environment's; see :mod:`._words`).
+in ``language`` (None: the environment's; see ``plotting/_words.py``).
 """
 
 from __future__ import annotations

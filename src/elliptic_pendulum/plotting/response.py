@@ -5,7 +5,7 @@ response curve of the driven pendulum with its stable and unstable branches, fol
 (:func:`plot_response`), and a slow sweep over it (:func:`plot_sweep`). Like
 :mod:`elliptic_pendulum.plotting`, which re-exports them, every helper takes an optional
 ``ax``, returns it, and changes no rcParams, and writes its words in ``language`` (None: the
-environment's; see :mod:`._words`).
+environment's; see ``plotting/_words.py``).
 """
 
 from __future__ import annotations
