@@ -85,9 +85,9 @@ MESSAGES = {
     "the bob's position and the rod's pull, read off the figure":
         "おもりの位置と棒が引く力。図から読み取る",
     "Newton's second law for the bob: the model itself":
-        "おもりに対するニュートンの第 2 法則。模型そのものである",
+        "おもりに対するニュートンの第 2 法則。モデルそのものである",
     "the small-angle model $\\sin\\theta \\approx \\theta$, an approximation of (3)":
-        "微小振動の模型 $\\sin\\theta \\approx \\theta$。(3) の近似である",
+        "微小振動のモデル $\\sin\\theta \\approx \\theta$。(3) の近似である",
     "names $\\omega_0 = \\sqrt{g/\\ell}$": "$\\omega_0 = \\sqrt{g/\\ell}$ と名づける",
     "names $\\theta_0$ by $\\cos\\theta_0 = -c_1/(2\\omega_0^2)$":
         "$\\cos\\theta_0 = -c_1/(2\\omega_0^2)$ によって $\\theta_0$ を名づける",

@@ -31,7 +31,7 @@ MESSAGES = {
     "crossings": "交差角",
     "amplitude $\\theta_0$ (degrees)": "振幅 $\\theta_0$（度）",
     # harmonics.py: the approximations of R, as ratio_approximations names them
-    "small angle": "微小振動",
+    "small angle": "微小振動の近似",
     "series 2": "級数（2 項）",
     "series 4": "級数（4 項）",
     "AGM 1": "AGM（1 ステップ）",
