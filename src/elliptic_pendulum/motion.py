@@ -27,6 +27,7 @@ import numpy.typing as npt
 from ._engine import flow as _flow
 from ._engine import states as _states
 from ._engine.codes import SEPARATRIX
+from ._i18n import Say, say_for
 from ._validation import FloatOrArray, positive_array, real_array, scalar_or_array
 from .regimes import REGIMES, Regime
 
@@ -185,8 +186,12 @@ class Motion:
         return _text(self)
 
     def _repr_html_(self) -> str:
-        """Return a small HTML table for Jupyter: regime, c1, amplitude or gamma, period."""
-        return _html(self)
+        """Return a small HTML table for Jupyter: regime, c1, amplitude or gamma, period.
+
+        Its words are in the environment's language as gettext reads it (Japanese for
+        LANGUAGE=ja), read at each display; the one-line repr stays Python.
+        """
+        return _html(self, say_for(__package__, None))
 
     def __bool__(self) -> bool:
         """Return True for a single state; for an array of states, ``len(m) != 0``.
@@ -353,25 +358,28 @@ def _frozen(fields: Any) -> Any:
 # --- how a Motion shows itself: a one-line repr and a small table for Jupyter --------------
 
 
-def _summary(motion: Any) -> list[tuple[str, str]]:
+def _summary(motion: Any, say: Say) -> list[tuple[str, str]]:
     """Return (label, value) rows: regime, c1, amplitude or gamma, period; or counts."""
     if motion.shape != ():
         counts = {r: int(np.count_nonzero(motion._p.code == i)) for i, r in enumerate(REGIMES)}
-        rows = [("states", f"{int(np.prod(motion.shape))} of shape {motion.shape}")]
-        rows += [(f"regime {r.value} ({r.name.lower()})", str(n))
-                 for r, n in counts.items() if n]
+        rows = [(say("states"), say("{count} of shape {shape}", count=int(np.prod(motion.shape)),
+                                    shape=motion.shape))]
+        rows += [(say("regime {numeral} ({name})", numeral=r.value, name=say(r.name.lower())),
+                  str(n)) for r, n in counts.items() if n]
         return rows
     regime = motion.regime
-    rows = [("regime", f"{regime.value} ({regime.name.lower()})"),
-            ("theta0, theta0'", f"{motion.theta0:.6g}, {motion.dtheta0:.6g}"),
-            ("omega0", f"{motion.omega0:.6g}"),
-            ("c1", f"{motion.energy_constant:.10g}")]
+    rows = [(say("regime"), say("{numeral} ({name})", numeral=regime.value,
+                                name=say(regime.name.lower()))),
+            (say("theta0, theta0'"), f"{motion.theta0:.6g}, {motion.dtheta0:.6g}"),
+            (say("omega0"), f"{motion.omega0:.6g}"),
+            (say("c1"), f"{motion.energy_constant:.10g}")]
     if regime is Regime.ROTATION:
-        rows.append(("gamma", f"{motion.modulus:.10g}"))
-        rows.append(("time per revolution", f"{motion.period:.10g}"))
+        rows.append((say("gamma"), f"{motion.modulus:.10g}"))
+        rows.append((say("time per revolution"), f"{motion.period:.10g}"))
     else:
-        rows.append(("amplitude", f"{motion.amplitude:.10g}"))
-        rows.append(("period", "inf" if math.isinf(motion.period) else f"{motion.period:.10g}"))
+        rows.append((say("amplitude"), f"{motion.amplitude:.10g}"))
+        rows.append((say("period"),
+                     "inf" if math.isinf(motion.period) else f"{motion.period:.10g}"))
     return rows
 
 
@@ -390,9 +398,9 @@ def _text(motion: Any) -> str:
             + ", ".join(f"{k}={v:.10g}" for k, v in fields) + ")")
 
 
-def _html(motion: Any) -> str:
-    """Return the HTML table."""
+def _html(motion: Any, say: Say) -> str:
+    """Return the HTML table, its words by ``say``."""
     body = "".join(f"<tr><th style='text-align:left'>{html.escape(k)}</th>"
                    f"<td style='text-align:left'>{html.escape(v)}</td></tr>"
-                   for k, v in _summary(motion))
+                   for k, v in _summary(motion, say))
     return f"<table><caption>elliptic_pendulum.Motion</caption>{body}</table>"

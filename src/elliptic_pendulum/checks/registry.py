@@ -19,7 +19,12 @@ that are definitions or are proved in the text only. ``tests/checks/test_registr
 every claim of ``CLAIMS`` has a check or a status, and that every check found carries a
 mutant where one is required.
 
-Standard library only.
+The tables are written in the language asked for (``language="ja"``), else in the
+environment's as gettext reads it; the module's own words are translated by
+``checks/_ja.py``, the texts of the checks found (sections, labels, mutants) by the catalog
+of the environment, as :mod:`elliptic_pendulum.checks.verify` describes.
+
+Standard library only (and the package's ``_i18n``, which is).
 """
 
 from __future__ import annotations
@@ -28,6 +33,8 @@ import json
 import re
 from dataclasses import dataclass
 from pathlib import Path
+
+from .._i18n import Say, say_for
 
 __all__ = ["CLAIMS", "KINDS", "STATUS", "Check", "claims_of", "coverage", "load", "markdown",
            "markdown_other"]
@@ -146,43 +153,56 @@ def coverage(checks: list[Check]) -> dict[str, list[Check]]:
     return table
 
 
-def markdown(checks: list[Check]) -> str:
-    """Return the registry as a MyST table: claim, kinds, mutants rejected, where checked."""
-    rows = ["| claim | kind of check | mutants rejected | where |", "|---|---|---|---|"]
+def _say(language: str | None) -> Say:
+    return say_for(__package__, language)
+
+
+def markdown(checks: list[Check], *, language: str | None = None) -> str:
+    """Return the registry as a MyST table: claim, kinds, mutants rejected, where checked.
+
+    In ``language`` ("en", "ja"); by default the environment's.
+    """
+    say = _say(language)
+    rows = [say("| claim | kind of check | mutants rejected | where |"), "|---|---|---|---|"]
     for claim, found in coverage(checks).items():
-        kinds = sorted({c.kind for c in found}, key=KINDS.index)
+        kinds = [say(kind) for kind in sorted({c.kind for c in found}, key=KINDS.index)]
         if claim in STATUS:
-            kinds.append(f"{STATUS[claim][0]}: {STATUS[claim][1]}")
-        mutants = "; ".join(dict.fromkeys(c.mutant.replace("|", "\\|") for c in found
-                                          if c.mutant)) or "none"
+            kinds.append(say("{kind}: {why}", kind=say(STATUS[claim][0]),
+                             why=say(STATUS[claim][1])))
+        mutants = "; ".join(dict.fromkeys(say(c.mutant).replace("|", "\\|") for c in found
+                                          if c.mutant)) or say("none")
         places = dict.fromkeys(
-            f"[{c.page}: {c.section}]({c.page}.md#{c.anchor})" if c.anchor
+            f"[{say('{page}: {section}', page=c.page, section=say(c.section))}]"
+            f"({c.page}.md#{c.anchor})" if c.anchor
             else f"[{c.page}]({c.page}.md)" for c in found)
         link = claim
         if claim.startswith("("):
             link = f"{{ref}}`{claim} <eq-{claim.strip('()')}>`"
-        rows.append(f"| {link} | {'; '.join(kinds) or '**none**'} | {mutants} | "
+        rows.append(f"| {link} | {'; '.join(kinds) or say('**none**')} | {mutants} | "
                     f"{'; '.join(places) or '-'} |")
     return "\n".join(rows)
 
 
-def markdown_other(checks: list[Check]) -> str:
+def markdown_other(checks: list[Check], *, language: str | None = None) -> str:
     """Return the checks of no numbered claim (remarks, exercises, the chapters beyond the note).
 
     One MyST table per page, in the order of ``checks``: label, kind, mutant rejected, section.
+    In ``language`` ("en", "ja"); by default the environment's.
     """
+    say = _say(language)
     pages: dict[str, list[Check]] = {}
     for c in checks:
         if not claims_of(c.claim):
             pages.setdefault(c.page, []).append(c)
     out = []
     for page, found in pages.items():
-        out += [f"### {{doc}}`{page}`", "", "| check | kind | mutant rejected | where |",
+        out += [f"### {{doc}}`{page}`", "", say("| check | kind | mutant rejected | where |"),
                 "|---|---|---|---|"]
         for c in found:
-            where = f"[{c.section}]({c.page}.md#{c.anchor})" if c.anchor else c.section
-            label = (c.claim or c.name or "(unnamed)").replace("|", "\\|")
-            mutant = c.mutant.replace("|", "\\|") or "none"
-            out.append(f"| {label} | {c.kind} | {mutant} | {where} |")
+            where = f"[{say(c.section)}]({c.page}.md#{c.anchor})" if c.anchor else say(c.section)
+            label = (say(c.claim or c.name) if c.claim or c.name
+                     else say("(unnamed)")).replace("|", "\\|")
+            mutant = say(c.mutant).replace("|", "\\|") or say("none")
+            out.append(f"| {label} | {say(c.kind)} | {mutant} | {where} |")
         out.append("")
     return "\n".join(out)

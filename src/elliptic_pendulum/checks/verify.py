@@ -27,15 +27,34 @@ Three kinds, named after what backs the claim:
 The book's registry of claims (``book/checks.md``) finds these calls in the pages' sources by
 their first argument, the claim (``"(26)"``, ``"Lemma 2.3"``), so that argument is a literal.
 
-This module changes no global state and imports nothing beyond the standard library.
+Each function writes its verdict in the language it is asked for (``language="ja"``), else
+in the environment's as gettext reads it (LANGUAGE, LC_ALL, LC_MESSAGES, LANG), read at the
+call; a language without messages gives English. The module's own sentences are translated by
+``checks/_ja.py``. The texts a caller passes (a fact's sentence, ``over``, ``measure``,
+``mutant_label``, an identity's ``mutant_label`` and ``domain_md``) are looked up, exact
+English to its translation, in the catalog that the environment variable
+``ELLIPTIC_PENDULUM_MESSAGES`` names (a gettext ``.po`` or ``.mo`` file; several separated by
+``os.pathsep``), read at the call; a text it does not hold stays English. So is the claim as
+the verdict shows it ("§3, case II"), while ``Verdict.claim`` stays the literal. A text with
+a number computed in the cell is passed as a template with its ``values``, so that one
+catalog entry serves every value. So the book's
+Japanese edition translates its cells' fragments in a catalog of its own, and runs the same
+cells::
+
+    ELLIPTIC_PENDULUM_MESSAGES=book/locale/ja/checks-fragments.po LANGUAGE=ja ...
+
+This module changes no global state and imports nothing beyond the standard library and the
+package's ``_i18n`` (standard library only).
 """
 
 from __future__ import annotations
 
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any, Protocol
+
+from .._i18n import Say, say_for
 
 __all__ = ["Verdict", "fact", "identity", "numeric"]
 
@@ -63,22 +82,30 @@ class Verdict:
     text: str
     display: str = ""
     details: str = ""
+    # The language of text and details, for the words the displays add ("How it was checked").
+    language: str = "en"
+    # The claim as the reader sees it, in that language ("" when it is ``claim`` itself);
+    # ``claim`` stays the book's literal, which the registry reads from the pages' sources.
+    shown: str = ""
 
     def __str__(self) -> str:
         """Return the verdict's sentence as plain text."""
-        return f"✔ {self.claim} {self._sentence()}"
+        return f"✔ {self.shown or self.claim} {self._sentence()}"
 
     def _sentence(self) -> str:
-        return self.text if self.text.endswith((".", "!", "?")) else self.text + "."
+        if self.text.endswith((".", "!", "?", "。")):
+            return self.text
+        return self.text + ("。" if self.language == "ja" else ".")
 
     def __repr__(self) -> str:
         """Return the same line: a verdict at the end of a cell reads as text."""
         return str(self)
 
     def _repr_markdown_(self) -> str:
-        line = f"✔ **{self.claim}** {_unbroken(self._sentence())}"
+        line = f"✔ **{self.shown or self.claim}** {_unbroken(self._sentence())}"
         if self.details:
-            line += ("\n\n<details><summary>How it was checked</summary>\n\n"
+            say = _say(self.language)
+            line += (f"\n\n<details><summary>{say('How it was checked')}</summary>\n\n"
                      f"{_unbroken(self.details)}\n\n</details>")
         if not self.display:
             return line
@@ -104,6 +131,10 @@ def _unbroken(text: str) -> str:
     return "$".join(parts)
 
 
+def _say(language: str | None) -> Say:
+    return say_for(__package__, language)
+
+
 def _require(ok: bool, message: str) -> None:
     # Not an assert statement: ``python -O`` would strip the checks.
     if not ok:
@@ -115,7 +146,7 @@ def _fmt(x: float) -> str:
     return "0" if x == 0 else f"{x:.1e}" if abs(x) < 1e-3 or abs(x) >= 1e4 else f"{x:.2g}"
 
 
-def identity(ident: _Identity, *, show: bool = False) -> Verdict:
+def identity(ident: _Identity, *, show: bool = False, language: str | None = None) -> Verdict:
     r"""Assert that a sympy identity holds and that its mutant does not; return the verdict.
 
     A statement with a domain (``ident.where``) is also evaluated, its radicals as principal
@@ -132,6 +163,8 @@ def identity(ident: _Identity, *, show: bool = False) -> Verdict:
     show : bool
         Display the statement itself above the verdict (off by default: on a page the
         verdict follows the equation the reader has just read).
+    language : str, optional
+        The language of the verdict ("en", "ja"); by default the environment's.
 
     Raises
     ------
@@ -146,42 +179,56 @@ def identity(ident: _Identity, *, show: bool = False) -> Verdict:
     ✔ (13) holds identically: sympy reduces the difference of its two sides to 0.
     >>> print(identity(named("eq13_root")))
     ✔ (13) holds for $- \pi < \theta < \pi$, not beyond: sympy reduces ... to 0 there.
+    >>> print(identity(named("eq13"), language="ja"))
+    ✔ (13) は恒等的に成り立つ。sympy は両辺の差を 0 に簡約する。
     """
+    say = _say(language)
     _require(ident.check(), f"{ident.equation} ({ident.name}): sympy does not confirm it")
     kind = getattr(ident, "kind", "sympy identity")
     where = getattr(ident, "where", ())
     outside = getattr(ident, "outside", ())
     details = []
     if kind == "arithmetic":
-        text = "follows by arithmetic: sympy evaluates both sides to the same value"
+        text = say("follows by arithmetic: sympy evaluates both sides to the same value")
     elif where:
-        domain = getattr(ident, "domain_md", "") or f"${ident.domain_latex()}$"  # type: ignore[attr-defined]
+        domain = say(getattr(ident, "domain_md", "")) or f"${ident.domain_latex()}$"  # type: ignore[attr-defined]
         at = ident.domain_residuals()  # type: ignore[attr-defined]
         _require(max(at) <= 1e-20, f"{ident.name}: fails at a point of its domain ({max(at):.3g})")
-        text = (f"holds for {domain}{', not beyond' if outside else ''}: sympy reduces the "
-                "difference of its two sides to 0 there")
-        details.append(
-            f"Sympy splits square roots as if their radicands were positive, which is true "
-            f"for {domain} only; without that step the difference is below $10^{{-20}}$ at "
-            f"{len(at)} points of it.")
+        if outside:
+            text = say("holds for {domain}, not beyond: sympy reduces the difference of its two "
+                       "sides to 0 there", domain=domain)
+        else:
+            text = say("holds for {domain}: sympy reduces the difference of its two sides to 0 "
+                       "there", domain=domain)
+        details.append(say(
+            "Sympy splits square roots as if their radicands were positive, which is true for "
+            "{domain} only; without that step the difference is below $10^{{-20}}$ at {count} "
+            "points of it.", domain=domain, count=len(at)))
         if outside:
             off = ident.value_at(dict(outside))  # type: ignore[attr-defined]
             _require(off > 1e-6, f"{ident.name}: holds outside its domain too")
             point = ", ".join(f"${_tex(v)} = {_tex(x)}$" for v, x in outside)
-            details.append(f"Beyond it the statement is false: at {point} the two sides "
-                           f"differ by {_fmt(off)}.")
+            details.append(say("Beyond it the statement is false: at {point} the two sides "
+                               "differ by {difference}.", point=point, difference=_fmt(off)))
     else:
-        text = "holds identically: sympy reduces the difference of its two sides to 0"
+        text = say("holds identically: sympy reduces the difference of its two sides to 0")
     mutant = getattr(ident, "mutant", None)
     if mutant is not None:
         wrong = ident.mutant_identity()  # type: ignore[attr-defined]
         _require(not wrong.check(), f"{ident.name}: the check cannot tell the mutant apart")
-        label = getattr(ident, "mutant_label", "") or f"${wrong.latex()}$"
-        details.append(f"A wrong version, {label}, is rejected: sympy does not reduce it "
-                       "to 0.")
+        label = say(getattr(ident, "mutant_label", "")) or f"${wrong.latex()}$"
+        details.append(say("A wrong version, {label}, is rejected: sympy does not reduce it "
+                           "to 0.", label=label))
     else:
-        details.append("No wrong version is tried.")
-    return Verdict(ident.equation, kind, text, ident.latex() if show else "", " ".join(details))
+        details.append(say("No wrong version is tried."))
+    return Verdict(ident.equation, kind, text, ident.latex() if show else "",
+                   say.sentences(details), say.language, _shown(say, ident.equation))
+
+
+def _shown(say: Say, claim: str) -> str:
+    """Return the claim in the reader's language, or "" when it reads the same."""
+    shown = say(claim)
+    return "" if shown == claim else shown
 
 
 def _tex(x: Any) -> str:
@@ -201,6 +248,8 @@ def numeric(
     over: str,
     mutant_label: str = "",
     measure: str = "max |residual|",
+    values: Mapping[str, Any] | None = None,
+    language: str | None = None,
 ) -> Verdict:
     r"""Assert ``residual(formula) <= tol < residual(mutant)``; return the verdict.
 
@@ -222,6 +271,14 @@ def numeric(
         The mutant as the reader would write it, e.g. ``"$8K_1/\omega_0$"``.
     measure : str
         What the residual is, for the verdict line.
+    values : dict, optional
+        Makes ``over``, ``mutant_label`` and ``measure`` templates (``str.format``; a literal
+        brace is ``{{``), filled with these values after translation, so that a catalog
+        translates "{n} swings" once for every n: ``over="{n} swings", values={"n": 20}``.
+    language : str, optional
+        The language of the verdict ("en", "ja"); by default the environment's. ``over``,
+        ``mutant_label`` and ``measure`` are looked up in the catalog of the environment (see
+        the module's description); the default ``measure`` is the package's own.
 
     Examples
     --------
@@ -243,28 +300,47 @@ def numeric(
     ...
     AssertionError: (8): max |residual| 3.7 > tolerance 1e-12
     """
+    say = _say(language)
+    fill = dict(values or {})
     err = float(residual(formula))
     _require(err <= tol, f"{claim}: {measure} {err:.3g} > tolerance {tol:.1g}")
-    text = f"holds: {measure} {_fmt(err)} over {over}"
-    details = f"Measured against an independent computation; the tolerance is {_fmt(tol)}."
+    measured = say(measure, **fill)
+    text = say("holds: {measure} {error} over {over}", measure=measured, error=_fmt(err),
+               over=say(over, **fill))
+    details = [say("Measured against an independent computation; the tolerance is "
+                   "{tolerance}.", tolerance=_fmt(tol))]
     if mutant is not None:
         bad = float(residual(mutant))
         _require(not bad <= tol, f"{claim}: the mutant passes too ({measure} {bad:.3g})")
-        details += (f" A wrong version, {mutant_label or 'a changed formula'}, is rejected: "
-                    f"its {measure} is {_fmt(bad)}.")
+        if mutant_label:
+            details.append(say("A wrong version, {label}, is rejected: its {measure} is "
+                               "{error}.", label=say(mutant_label, **fill), measure=measured,
+                               error=_fmt(bad)))
+        else:
+            details.append(say("A wrong version, a changed formula, is rejected: its {measure} "
+                               "is {error}.", measure=measured, error=_fmt(bad)))
     else:
         # Said, so that a reader sees the check is the weaker kind.
-        details += " No wrong version is tried."
-    return Verdict(claim, "numerical", text, details=details)
+        details.append(say("No wrong version is tried."))
+    return Verdict(claim, "numerical", text, details=say.sentences(details),
+                   language=say.language, shown=_shown(say, claim))
 
 
-def fact(claim: str, ok: bool, text: str) -> Verdict:
+def fact(claim: str, ok: bool, text: str, *, values: Mapping[str, Any] | None = None,
+         language: str | None = None) -> Verdict:
     """Assert a numerical fact and return it as a verdict.
+
+    ``text`` is written in ``language`` (by default the environment's) when the catalog of the
+    environment has it (see the module's description), else as given. With ``values`` it is
+    a template (``str.format``), filled after translation: ``fact("(30)", ok, "over {n}
+    rotations", values={"n": n})`` needs one catalog entry for every n.
 
     Examples
     --------
     >>> fact("(14)", -1 <= 0.3 <= 1, "xi stays in [-1, 1]")
     ✔ (14) xi stays in [-1, 1].
     """
-    _require(ok, f"{claim}: not so: {text}")
-    return Verdict(claim, "numerical fact", text)
+    say = _say(language)
+    _require(ok, f"{claim}: not so: {text.format(**values) if values else text}")
+    return Verdict(claim, "numerical fact", say(text, **(values or {})), language=say.language,
+                   shown=_shown(say, claim))

@@ -4,6 +4,9 @@ Every figure function takes an optional matplotlib ``ax`` (or ``axes``), draws o
 returns it; none calls ``plt.show()`` or changes rcParams. Text is sized from the figure's
 width, so it stays readable when the figure is scaled to a page. matplotlib is imported only
 by the functions that draw, so importing :mod:`elliptic_pendulum` does not select a backend.
+Each writes its words in the language of its keyword ``language`` ("en", "ja"; None, the
+default, is the environment's as gettext reads it), Japanese in a Japanese font set on each
+of its texts, never through rcParams (``plotting/_words.py``).
 
 The functions are named ``plot_<what it shows>``, and grouped by subject in the modules of
 this package: the pendulum and its phase plane (:mod:`.phase`), the elliptic functions and

@@ -8,7 +8,9 @@ s * 96/72 * min(1, column / (96 w)) pixels; at 2 points per inch of width, the s
 (0.9 of :func:`text_size`: tick labels, legends, labels on curves) reads at 9 px or more in a
 phone's column of 368 pixels and at about 17 px in the book's 672-pixel column. Sizes are
 applied to the axes drawn on, never through rcParams: the library changes no global state.
-Legends go where they hide no data (:func:`place_legend`).
+Legends go where they hide no data (:func:`place_legend`). A legend in a language whose
+letters matplotlib's default font lacks gets the path of a font that has them (``font``), as
+a property of that legend only.
 """
 
 from __future__ import annotations
@@ -113,13 +115,26 @@ def _covers(box: Any, points: np.ndarray, margin: float) -> bool:
                        & (points[:, 1] >= y0) & (points[:, 1] <= y1)))
 
 
-def place_legend(ax: Any, *args: Any, loc: str = "upper right", **kwargs: Any) -> Any:
+def _legend_font(kwargs: dict[str, Any], size: float, font: str | None) -> None:
+    """Set the legend's text size, and its font when ``font`` (a file's path) is given."""
+    if font is None:
+        kwargs.setdefault("fontsize", size)
+        kwargs.setdefault("title_fontsize", size)
+        return
+    from matplotlib.font_manager import FontProperties
+
+    kwargs.setdefault("prop", FontProperties(fname=font, size=size))
+    kwargs.setdefault("title_fontproperties", FontProperties(fname=font, size=size))
+
+
+def place_legend(ax: Any, *args: Any, loc: str = "upper right", font: str | None = None,
+                 **kwargs: Any) -> Any:
     """Draw the legend of ``ax`` where it hides no data; return it.
 
     The first of ``loc`` and the corners (then the middles of the sides) of the axes where the
     legend's box holds no plotted point (see :func:`data_points_px`), measured after the
     figure's layout; when there is none, beside the axes, right of their top. Its text is sized
-    by :func:`text_size` before it is measured.
+    by :func:`text_size` before it is measured, in the font at the path ``font`` if given.
 
     Examples
     --------
@@ -138,8 +153,7 @@ def place_legend(ax: Any, *args: Any, loc: str = "upper right", **kwargs: Any) -
     >>> plt.close("all")
     """
     size = text_size(ax, 0.9)
-    kwargs.setdefault("fontsize", size)
-    kwargs.setdefault("title_fontsize", size)
+    _legend_font(kwargs, size, font)
     for where in dict.fromkeys((loc, *_CORNERS)):
         legend = ax.legend(*args, loc=where, **kwargs)
         renderer = layout(ax)
@@ -168,11 +182,12 @@ def layout(ax: Any) -> Any:
     return RendererAgg(fig.bbox.width, fig.bbox.height, fig.dpi)
 
 
-def legend_below(ax: Any, *args: Any, gap: float = 4.0, **kwargs: Any) -> Any:
+def legend_below(ax: Any, *args: Any, gap: float = 4.0, font: str | None = None,
+                 **kwargs: Any) -> Any:
     """Draw the legend of ``ax`` centred under its x axis; return it.
 
     Below the tick labels and the x label, ``gap`` points lower, wherever the layout puts the
-    axes.
+    axes; in the font at the path ``font`` if given.
 
     Examples
     --------
@@ -192,9 +207,7 @@ def legend_below(ax: Any, *args: Any, gap: float = 4.0, **kwargs: Any) -> Any:
     from matplotlib.transforms import ScaledTranslation
 
     fig = ax.figure
-    size = text_size(ax, 0.9)
-    kwargs.setdefault("fontsize", size)
-    kwargs.setdefault("title_fontsize", size)
+    _legend_font(kwargs, text_size(ax, 0.9), font)
     renderer = layout(ax)
     below = max(0.0, ax.bbox.y0 - ax.xaxis.get_tightbbox(renderer).y0)  # pixels
     drop = below / fig.dpi + gap / 72  # inches

@@ -29,6 +29,7 @@ import numpy as np
 from .._validation import positive_scalar
 from ..motion import Motion
 from ._base import legend_below, readable, text_size
+from ._words import words
 
 __all__ = ["animate", "animation_html"]
 
@@ -41,6 +42,12 @@ _ICONS = {
     "fa fa-fast-forward": "\u25b6\u25b6",
 }
 _COLOURS = ("tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple", "tab:brown")
+
+
+def _regime_name(motion: Motion, say: Any) -> str:
+    """Return the name of a motion's regime, in the language of ``say``."""
+    return {"rest": say("rest"), "libration": say("libration"), "separatrix": say("separatrix"),
+            "rotation": say("rotation")}[motion.regime.name.lower()]
 
 
 def _wrapped(theta: np.ndarray) -> np.ndarray:
@@ -56,7 +63,7 @@ def _default_duration(motions: Sequence[Motion]) -> float:
 
 
 def animate(motions: Motion | Sequence[Motion], duration: float | None = None, frames: int = 90,
-            interval: float = 50.0) -> Any:
+            interval: float = 50.0, *, language: str | None = None) -> Any:
     r"""Animate pendulums beside their points on the phase plane.
 
     .. math:: (x, y) = (\sin\theta(t), -\cos\theta(t)), \qquad
@@ -73,6 +80,8 @@ def animate(motions: Motion | Sequence[Motion], duration: float | None = None, f
         Number of frames J (>= 2); default 90.
     interval : float, optional
         Milliseconds between frames in the player; default 50.
+    language : str, optional
+        The language of the figure's words ("en", "ja"); None: the environment's.
 
     Returns
     -------
@@ -123,6 +132,7 @@ def animate(motions: Motion | Sequence[Motion], duration: float | None = None, f
     end = _default_duration(motions) if duration is None else positive_scalar(duration,
                                                                                "duration")
     interval = positive_scalar(interval, "interval")
+    say = words(language)
     times = np.linspace(0.0, end, frames)
     states = [(m.theta(times), m.dtheta(times)) for m in motions]
     spacing = 2.5  # pivots side by side, one rod length and a margin apart
@@ -143,11 +153,11 @@ def animate(motions: Motion | Sequence[Motion], duration: float | None = None, f
     grid = np.linspace(-math.pi, math.pi, 401)
     for sign in (1, -1):
         right.plot(grid, sign * 2 * w0 * np.cos(grid / 2), color="0.6", lw=1, ls="--",
-                   label="separatrix" if sign == 1 else None)
+                   label=say("separatrix") if sign == 1 else None)
     speeds = max(2.2 * w0, *(np.max(np.abs(s[1])) * 1.1 for s in states))
     right.set_xlim(-math.pi, math.pi)
     right.set_ylim(-speeds, speeds)
-    right.set_xlabel(r"$\theta$ (reduced to $(-\pi, \pi]$)")
+    right.set_xlabel(say(r"$\theta$ (reduced to $(-\pi, \pi]$)"))
     right.set_ylabel(r"$\theta'$")
 
     rods, bobs, points = [], [], []
@@ -164,10 +174,12 @@ def animate(motions: Motion | Sequence[Motion], duration: float | None = None, f
         wrapped, speed = _wrapped(m.theta(dense)), m.dtheta(dense)
         jumps = np.concatenate([[False], np.abs(np.diff(wrapped)) > math.pi])
         right.plot(np.where(jumps, np.nan, wrapped), speed, color=colour, lw=1, alpha=0.5,
-                   label=f"{m.regime.name.lower()} ({m.regime.value})")
+                   label=say("{name} ({numeral})", name=_regime_name(m, say),
+                             numeral=m.regime.value))
         points.append(right.plot([], [], "o", color=colour, ms=7)[0])
+    say.dress(left, right)
     readable(right)
-    legend_below(right, ncol=3, frameon=False)
+    legend_below(right, ncol=3, frameon=False, font=say.font)
 
     def draw(j: int) -> list[Any]:
         for i, (theta, dtheta) in enumerate(states):
@@ -194,15 +206,16 @@ def animate(motions: Motion | Sequence[Motion], duration: float | None = None, f
 
 def animation_html(motions: Motion | Sequence[Motion], duration: float | None = None,
                    frames: int = 90,
-                   interval: float = 50.0) -> str:
+                   interval: float = 50.0, *, language: str | None = None) -> str:
     r"""Render :func:`animate` as matplotlib's self-contained JavaScript player, then close it.
 
     .. math:: \text{frames } j = 0, \dots, J - 1 \text{ at } t_j = j\,t_{\mathrm{end}}/(J - 1)
 
     Parameters
     ----------
-    motions, duration, frames, interval
-        As for :func:`animate`.
+    motions, duration, frames, interval, language
+        As for :func:`animate`. The player's own controls keep matplotlib's English names
+        ("Play", "Frame"), which a screen reader reads; the figure's words are in ``language``.
 
     Returns
     -------
@@ -224,7 +237,7 @@ def animation_html(motions: Motion | Sequence[Motion], duration: float | None = 
     """
     from matplotlib import pyplot as plt
 
-    anim = animate(motions, duration, frames, interval)
+    anim = animate(motions, duration, frames, interval, language=language)
     try:
         html = str(anim.to_jshtml(default_mode="loop"))
     finally:

@@ -5,7 +5,8 @@ string pendulum's bob on its circle, in free flight after the string goes slack,
 circle again after the jerk (:func:`plot_string_flight`); the phase plane shaded by what a
 string does (:func:`plot_string_phase_plane`). Like every figure of
 :mod:`elliptic_pendulum.plotting`, which re-exports them, each takes an optional ``ax``,
-returns it, and changes no rcParams.
+returns it, and changes no rcParams; each writes its words in ``language`` (None: the
+environment's; see ``plotting/_words.py``).
 """
 
 from __future__ import annotations
@@ -19,6 +20,7 @@ from ..mechanics.rod import Pendulum
 from ..mechanics.string import free_flight, string_stays_taut
 from ..motion import solve
 from ._base import legend_below, new_axes, place_legend, readable
+from ._words import words
 from .phase import plot_phase_portrait
 
 __all__ = ["plot_tension", "plot_string_flight", "plot_string_phase_plane", "tension_plot",
@@ -27,7 +29,8 @@ __all__ = ["plot_tension", "plot_string_flight", "plot_string_phase_plane", "ten
 _axes = new_axes
 
 
-def plot_tension(theta0: float, omega0: float = 1.0, ax: Any = None) -> Any:
+def plot_tension(theta0: float, omega0: float = 1.0, ax: Any = None, *,
+                 language: str | None = None) -> Any:
     r"""Plot the rod's tension T/(mg) along one period of a swing released at rest from θ0.
 
     .. math:: T &= m\ell(\theta')^2 + mg\cos\theta \quad (4), \\
@@ -45,6 +48,8 @@ def plot_tension(theta0: float, omega0: float = 1.0, ax: Any = None) -> Any:
         ω0 = sqrt(g/ℓ); time on the axis is in units of the period.
     ax : matplotlib.axes.Axes, optional
         Where to draw; a new figure when None.
+    language : str, optional
+        The language of the figure's words ("en", "ja"); None: the environment's.
 
     Returns
     -------
@@ -75,6 +80,7 @@ def plot_tension(theta0: float, omega0: float = 1.0, ax: Any = None) -> Any:
         raise TypeError(f"theta0 must be a real number (radians), got {theta0!r}") from None
     if not 0.0 < theta0 < math.pi:
         raise ValueError(f"theta0 must be in (0, pi) (a swing released at rest), got {theta0!r}")
+    say = words(language)
     ax = _axes(ax)
     pendulum = Pendulum(length=1.0, g=float(omega0) ** 2, mass=1.0)
     swing = pendulum.solve(theta0)
@@ -85,20 +91,21 @@ def plot_tension(theta0: float, omega0: float = 1.0, ax: Any = None) -> Any:
     pushes = ratio < 0
     if pushes.any():
         ax.fill_between(t / swing.period, ratio, 0.0, where=pushes, color="C3", alpha=0.3,
-                        label=r"$T < 0$: the rod pushes")
+                        label=say(r"$T < 0$: the rod pushes"))
     ax.set_xlim(0, 1)
     low, high = float(ratio.min()), float(ratio.max())
     # Headroom above the curve for the legend.
     ax.set_ylim(min(low, 0.0) - 0.1 * (high - low), high + 0.4 * (high - low))
-    ax.set_xlabel(r"time $t$ / period (released at $t = 0$ from $\theta_0$)")
+    ax.set_xlabel(say(r"time $t$ / period (released at $t = 0$ from $\theta_0$)"))
     ax.set_ylabel(r"$T/(mg)$")
     ax.set_title(rf"$\theta_0 = {math.degrees(theta0):.0f}°$")
-    place_legend(ax, loc="upper center", ncol=2)
+    say.dress(ax)
+    place_legend(ax, loc="upper center", ncol=2, font=say.font)
     return readable(ax)
 
 
 def plot_string_flight(theta0: float, dtheta0: float, omega0: float = 1.0, ax: Any = None,
-                       legend: bool = True) -> Any:
+                       legend: bool = True, *, language: str | None = None) -> Any:
     r"""Draw the bob of a string pendulum: on the circle, in free flight, on the circle again.
 
     .. math:: x = \sin\theta_s + v_x s, \qquad y = -\cos\theta_s + v_y s - \tfrac12 g s^2
@@ -119,6 +126,8 @@ def plot_string_flight(theta0: float, dtheta0: float, omega0: float = 1.0, ax: A
         Where to draw; a new figure when None.
     legend : bool
         Draw the legend.
+    language : str, optional
+        The language of the figure's words ("en", "ja"); None: the environment's.
 
     Returns
     -------
@@ -158,6 +167,7 @@ def plot_string_flight(theta0: float, dtheta0: float, omega0: float = 1.0, ax: A
     if flight is None:
         raise ValueError(f"the string stays taut from (theta0, dtheta0) = ({theta0!r}, "
                          f"{dtheta0!r}): there is no flight")
+    say = words(language)
     ax = new_axes(ax, figsize=(4.5, 4.2))
     motion = solve(theta0, dtheta0, omega0)
     ring = np.linspace(0, 2 * np.pi, 400)
@@ -168,25 +178,31 @@ def plot_string_flight(theta0: float, dtheta0: float, omega0: float = 1.0, ax: A
     t_after = np.linspace(0.0, span, 200)
     ax.plot(np.sin(ring), np.cos(ring), ":", color="0.6", lw=1)
     ax.plot(np.sin(motion.theta(t_on)), -np.cos(motion.theta(t_on)), color="C0", lw=2,
-            label="on the circle")
-    ax.plot(fx, fy, color="C3", lw=2, label="free flight")
+            label=say("on the circle"))
+    ax.plot(fx, fy, color="C3", lw=2, label=say("free flight"))
     ax.plot(np.sin(after.theta(t_after)), -np.cos(after.theta(t_after)), color="C2", lw=2,
-            label="after the jerk")
+            label=say("after the jerk"))
     ax.plot([math.sin(flight.theta_slack)], [-math.cos(flight.theta_slack)], "o", color="k",
-            ms=5, label="slack")
+            ms=5, label=say("slack"))
     ax.plot([0], [0], "+", color="k", ms=10)
     ax.set_aspect("equal")
     ax.set_xlim(-1.25, 1.25)
     ax.set_ylim(-1.25, 1.25)
     w = float(dtheta0) / float(omega0)
-    start = (rf"$\theta(0) = {math.degrees(float(theta0)):g}°$, " if theta0 != 0 else "kick ")
-    ax.set_title(start + rf"$\theta'(0) = {w:g}\,\omega_0$")
+    if theta0 != 0:
+        title = say(r"$\theta(0) = {angle}°$, $\theta'(0) = {speed}\,\omega_0$",
+                    angle=f"{math.degrees(float(theta0)):g}", speed=f"{w:g}")
+    else:
+        title = say(r"kick $\theta'(0) = {speed}\,\omega_0$", speed=f"{w:g}")
+    ax.set_title(title)
+    say.dress(ax)
     if legend:
-        place_legend(ax, loc="upper left", framealpha=0.9)
+        place_legend(ax, loc="upper left", framealpha=0.9, font=say.font)
     return readable(ax)
 
 
-def plot_string_phase_plane(omega0: float = 1.0, ax: Any = None) -> Any:
+def plot_string_phase_plane(omega0: float = 1.0, ax: Any = None, *,
+                            language: str | None = None) -> Any:
     r"""Shade the phase plane by what a string does, with the phase portrait on top.
 
     .. math:: e = \frac{(\theta')^2}{\omega_0^2} - 2\cos\theta, \qquad
@@ -205,6 +221,8 @@ def plot_string_phase_plane(omega0: float = 1.0, ax: Any = None) -> Any:
         ω0 = sqrt(g/ℓ).
     ax : matplotlib.axes.Axes, optional
         Where to draw; a new figure when None.
+    language : str, optional
+        The language of the figure's words ("en", "ja"); None: the environment's.
 
     Returns
     -------
@@ -232,6 +250,7 @@ def plot_string_phase_plane(omega0: float = 1.0, ax: Any = None) -> Any:
 
 
     w0 = float(omega0)
+    say = words(language)
     ax = new_axes(ax, figsize=(9, 5.6))
     gx, gy = np.meshgrid(np.linspace(-math.pi, math.pi, 601),
                          np.linspace(-3.5 * w0, 3.5 * w0, 601))
@@ -249,16 +268,18 @@ def plot_string_phase_plane(omega0: float = 1.0, ax: Any = None) -> Any:
             ax.plot(xs[inside], sign * border[inside], style, color="k", lw=1.2)
     plot_phase_portrait(omega0=w0, ax=ax, window=math.pi, label=False, arrows=False,
                    xlim=(-math.pi, math.pi), ylim=(-3.5 * w0, 3.5 * w0),
-                   amplitudes_deg=(45, 90, 120, 150), kicks=(1.05, 1.1, 1.3))
+                   amplitudes_deg=(45, 90, 120, 150), kicks=(1.05, 1.1, 1.3),
+                   language=language)
     handles: list[Any] = [Patch(color=c, label=t) for c, t in zip(colors, (
-        "taut forever", "taut now, slack later", "slack now (T < 0)"), strict=True)]
+        say("taut forever"), say("taut now, slack later"), say("slack now (T < 0)")),
+        strict=True)]
     handles += [Line2D([], [], color="k", lw=1.2, label="e = 0"),
                 Line2D([], [], color="k", ls="--", lw=1.2, label="e = 3")]
     handles += [Line2D([], [], color=c, lw=1.2, label=t) for c, t in (
-        ("C0", "swings"), ("C3", "separatrix"), ("C2", "rotations"))]
-    handles.append(Line2D([], [], color="C3", marker="o", ls="none", label="rest"))
+        ("C0", say("swings")), ("C3", say("separatrix")), ("C2", say("rotations")))]
+    handles.append(Line2D([], [], color="C3", marker="o", ls="none", label=say("rest")))
     readable(ax)
-    legend_below(ax, handles=handles, ncol=5, frameon=False)
+    legend_below(ax, handles=handles, ncol=5, frameon=False, font=say.font)
     return ax
 
 

@@ -4,7 +4,8 @@ The period ratio R(θ0) with its crossings and its logarithmic growth near the t
 4, :func:`plot_period_ratio`), the errors of the laboratory's approximations of R
 (:func:`plot_approximation_error`) and the harmonics of a swing (:func:`plot_harmonics`).
 Like every figure of :mod:`elliptic_pendulum.plotting`, which re-exports them, each takes an
-optional ``ax`` (or ``axes``), returns it, and changes no rcParams.
+optional ``ax`` (or ``axes``), returns it, and changes no rcParams; each writes its words
+in ``language`` (None: the environment's; see ``plotting/_words.py``).
 """
 
 from __future__ import annotations
@@ -22,6 +23,7 @@ from ..periods.approximations import ratio_approximations
 from ..periods.period import agm_period, crossing_angle, period, period_ratio
 from ..periods.series import fourier_coefficients
 from ._base import legend_below, new_axes, place_legend, readable, text_size
+from ._words import Words, words
 
 __all__ = ["plot_period_ratio", "plot_approximation_error", "plot_harmonics", "period_ratio_plot",
            "approximation_error_plot", "harmonics_plot"]
@@ -35,7 +37,15 @@ _STYLES = {"small angle": ("0.4", "-"), "series 2": ("C0", "-"), "series 4": ("C
            "Lima-Arun": ("C4", "-")}
 
 
-def plot_period_ratio(ax: Any = None, crossings: Sequence[float] = (2.0, 3.0, 4.0)) -> Any:
+def _approximation(label: str, say: Words) -> str:
+    """Return the legend entry of an approximation; its authors' names stay as they are."""
+    return {"small angle": say("small angle"), "series 2": say("series 2"),
+            "series 4": say("series 4"), "AGM 1": say("AGM 1"), "AGM 2": say("AGM 2"),
+            "AGM 3": say("AGM 3"), "log": say("log"), "log 2": say("log 2")}.get(label, label)
+
+
+def plot_period_ratio(ax: Any = None, crossings: Sequence[float] = (2.0, 3.0, 4.0), *,
+                      language: str | None = None) -> Any:
     r"""Plot R(θ0), the period over the small-angle period, with crossings and asymptote.
 
     .. math:: R(\theta_0) = \frac{2}{\pi} K_1\!\left(\sin\frac{\theta_0}{2}\right)
@@ -51,6 +61,8 @@ def plot_period_ratio(ax: Any = None, crossings: Sequence[float] = (2.0, 3.0, 4.
         Where to draw; a new figure when None.
     crossings : list of float
         The values of R whose amplitudes are marked (each >= 1).
+    language : str, optional
+        The language of the figure's words ("en", "ja"); None: the environment's.
 
     Returns
     -------
@@ -69,6 +81,7 @@ def plot_period_ratio(ax: Any = None, crossings: Sequence[float] = (2.0, 3.0, 4.
     True
     >>> import matplotlib.pyplot as plt; plt.close("all")
     """
+    say = words(language)
     ax = _axes(ax)
     # Dense towards 180 degrees, where R grows: equal steps in log(pi - theta0).
     gap = np.geomspace(math.pi, 1e-4, 600)
@@ -85,19 +98,22 @@ def plot_period_ratio(ax: Any = None, crossings: Sequence[float] = (2.0, 3.0, 4.
     for v, a in zip(values, angles, strict=True):
         ax.plot([0, a, a], [v, v, 0], ":", color="0.5", lw=1)
         # Left of the crossing, above its line, where the curve is still below that value.
-        ax.annotate(rf"$R = {v:g}$ at $\theta_0 = {a:.1f}°$", (a - 3, v), ha="right",
+        ax.annotate(say(r"$R = {value}$ at $\theta_0 = {angle}°$", value=f"{v:g}",
+                        angle=f"{a:.1f}"), (a - 3, v), ha="right",
                     va="bottom", fontsize=text_size(ax, 0.9))
-    ax.plot(angles, values, "o", color="C1", label="crossings")
+    ax.plot(angles, values, "o", color="C1", label=say("crossings"))
     ax.set_xlim(0, 180)
     ax.set_ylim(0, max(5.0, float(values.max()) + 1))
     ax.set_xticks(range(0, 181, 30))
-    ax.set_xlabel(r"amplitude $\theta_0$ (degrees)")
+    ax.set_xlabel(say(r"amplitude $\theta_0$ (degrees)"))
     ax.set_ylabel(r"$R = T / T_0$")
-    place_legend(ax, loc="upper left")
+    say.dress(ax)
+    place_legend(ax, loc="upper left", font=say.font)
     return readable(ax)
 
 
-def plot_approximation_error(ax: Any = None, amplitudes: npt.ArrayLike | None = None) -> Any:
+def plot_approximation_error(ax: Any = None, amplitudes: npt.ArrayLike | None = None, *,
+                             language: str | None = None) -> Any:
     r"""Plot the relative error of the laboratory's approximations of R, on log scales.
 
     .. math:: \left|\frac{\tilde R(\theta_0)}{R(\theta_0)} - 1\right|, \qquad
@@ -115,6 +131,8 @@ def plot_approximation_error(ax: Any = None, amplitudes: npt.ArrayLike | None = 
     amplitudes : array_like, optional
         Amplitudes in radians, in (0, π); default 300 from 1 to 170 degrees and 199 closer and
         closer to the top, down to 179.999 degrees.
+    language : str, optional
+        The language of the figure's words ("en", "ja"); None: the environment's.
 
     Returns
     -------
@@ -148,22 +166,25 @@ def plot_approximation_error(ax: Any = None, amplitudes: npt.ArrayLike | None = 
     x = np.asarray(amplitudes, dtype=float)
     if x.ndim != 1 or x.size == 0 or np.any((x <= 0) | (x >= math.pi)):
         raise ValueError("amplitudes must be a non-empty 1-d array of radians in (0, pi)")
+    say = words(language)
     ax = new_axes(ax, figsize=(8, 5))
     exact = agm_period(x) / (2 * math.pi)
     for label, values in ratio_approximations(x).items():
         err = np.abs(values / exact - 1)
         color, ls = _STYLES[label]
-        ax.plot(x / math.pi, np.where(err > 0, err, np.nan), color=color, ls=ls, label=label)
+        ax.plot(x / math.pi, np.where(err > 0, err, np.nan), color=color, ls=ls,
+                label=_approximation(label, say))
     ax.set_xscale("logit")
     ticks = [1, 10, 90, 170, 179, 179.9, 179.999]  # 179.99 would run into its neighbours
     ax.set_xticks([d / 180 for d in ticks], [f"{d:g}°" for d in ticks])
     ax.xaxis.set_minor_locator(NullLocator())
     ax.set_yscale("log")
     ax.set_ylim(1e-16, 10)
-    ax.set_xlabel(r"amplitude $\theta_0$")
-    ax.set_ylabel(r"relative error $|\tilde R/R - 1|$")
+    ax.set_xlabel(say(r"amplitude $\theta_0$"))
+    ax.set_ylabel(say(r"relative error $|\tilde R/R - 1|$"))
+    say.dress(ax)
     readable(ax)
-    legend_below(ax, ncol=5, frameon=False)
+    legend_below(ax, ncol=5, frameon=False, font=say.font)
     return ax
 
 
@@ -175,7 +196,7 @@ def _fft_coefficients(theta0: float, n: int, samples: int) -> np.ndarray:
 
 
 def plot_harmonics(amplitudes_deg: Sequence[float], n: int = 12, axes: Any = None,
-                   samples: int = 1024) -> Any:
+                   samples: int = 1024, *, language: str | None = None) -> Any:
     r"""Plot swings flattening into a square wave, and their Fourier coefficients.
 
     .. math:: \theta(t) = \sum_{j \ge 0} b_j\sin\frac{(2j + 1)\,2\pi t}{T}, \qquad
@@ -197,6 +218,8 @@ def plot_harmonics(amplitudes_deg: Sequence[float], n: int = 12, axes: Any = Non
         Where to draw; a new figure with two panels when None.
     samples : int
         FFT length.
+    language : str, optional
+        The language of the figure's words ("en", "ja"); None: the environment's.
 
     Returns
     -------
@@ -218,6 +241,7 @@ def plot_harmonics(amplitudes_deg: Sequence[float], n: int = 12, axes: Any = Non
     1.0
     >>> import matplotlib.pyplot as plt; plt.close("all")
     """
+    say = words(language)
     n, samples = int(n), int(samples)
     if not 1 <= n <= samples // 4:
         raise ValueError(f"n must be in [1, samples/4] = [1, {samples // 4}], got {n}")
@@ -242,18 +266,19 @@ def plot_harmonics(amplitudes_deg: Sequence[float], n: int = 12, axes: Any = Non
         keep = b_fft / b_fft[0] > 1e-16
         ax2.semilogy(harm[keep], (b_fft / b_fft[0])[keep], "x", color="k", ms=4)
     ax2.semilogy(harm, 1 / harm, "--", color="0.4", label=r"$1/(2j+1)$")
-    ax2.plot([], [], "o", color="0.6", label="formula")
+    ax2.plot([], [], "o", color="0.6", label=say("formula"))
     ax2.plot([], [], "x", color="k", label="FFT")
-    ax1.set_xlabel(r"$t/T$ from the upward passage")
+    ax1.set_xlabel(say(r"$t/T$ from the upward passage"))
     ax1.set_ylabel(r"$\theta/\theta_0$")
-    ax2.set_xlabel(r"harmonic $2j + 1$")
+    ax2.set_xlabel(say(r"harmonic $2j + 1$"))
     ax2.set_ylabel(r"$b_j / b_0$")
     ax2.set_ylim(1e-16, 2)
+    say.dress(*axes)
     for ax in axes:
         readable(ax)
     # Once both panels are drawn, the right one first: a legend beside it narrows the left one.
-    place_legend(ax2)
-    place_legend(ax1, title="amplitude")
+    place_legend(ax2, font=say.font)
+    place_legend(ax1, title=say("amplitude"), font=say.font)
     return axes
 
 

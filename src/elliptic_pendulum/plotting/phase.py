@@ -18,6 +18,7 @@ from ..motion import Motion, solve
 from ..numerics import integrate
 from ._arrows import arrowheads_in_view, visible
 from ._base import layout, legend_below, new_axes, place_legend, readable, text_size
+from ._words import words
 
 __all__ = ["plot_pendulum", "plot_phase_portrait", "plot_motion", "pendulum_sketch",
            "phase_portrait"]
@@ -25,11 +26,13 @@ __all__ = ["plot_pendulum", "plot_phase_portrait", "plot_motion", "pendulum_sket
 _axes = new_axes
 
 
-def plot_pendulum(theta: float = 0.55, ax: Any = None) -> Any:
+def plot_pendulum(theta: float = 0.55, ax: Any = None, *, language: str | None = None) -> Any:
     """Draw Fig. 1: the pendulum with its angle, tension and weight.
 
     The rod of length l hangs from the origin, the bob sits at (l sin θ, -l cos θ) (1),
-    the tension T points along the rod towards the pivot and the weight mg down.
+    the tension T points along the rod towards the pivot and the weight mg down. Its labels
+    are symbols only; ``language`` (None: the environment's) sets their font, as in every
+    figure.
 
     Examples
     --------
@@ -68,6 +71,7 @@ def plot_pendulum(theta: float = 0.55, ax: Any = None) -> Any:
     ax.set_aspect("equal")
     ax.set_xlabel("$x$")
     ax.set_ylabel("$y$")
+    words(language).dress(ax)
     return readable(ax)
 
 
@@ -93,7 +97,8 @@ def plot_phase_portrait(omega0: float = 1.0, ax: Any = None,
                    kicks: Sequence[float] = (1.1, 1.3, 1.6),
                    window: float = 3 * math.pi, label: bool = True, arrows: bool = True,
                    xlim: tuple[float, float] | None = None,
-                   ylim: tuple[float, float] | None = None) -> Any:
+                   ylim: tuple[float, float] | None = None, *,
+                   language: str | None = None) -> Any:
     r"""Fig. 2: curves (9) in the (θ, θ') plane, each labelled by c1 / ω0².
 
     .. math:: (\theta')^2 - 2\omega_0^2\cos\theta = c_1 \quad (9)
@@ -120,6 +125,8 @@ def plot_phase_portrait(omega0: float = 1.0, ax: Any = None,
         motion: clockwise, rightwards where θ' > 0 and leftwards where θ' < 0.
     xlim, ylim : (float, float), optional
         A close-up. The legend then lists only the regimes with a curve in view.
+    language : str, optional
+        The language of the legend's words ("en", "ja"); None: the environment's.
 
     Returns
     -------
@@ -146,6 +153,7 @@ def plot_phase_portrait(omega0: float = 1.0, ax: Any = None,
     ['II', 'III', 'IV']
     >>> import matplotlib.pyplot as plt; plt.close("all")
     """
+    say = words(language)
     ax = _axes(ax, figsize=(9, 5))
     w2 = omega0 ** 2
     shifts = 2 * math.pi * np.arange(-math.floor(window / (2 * math.pi) + 0.5),
@@ -199,12 +207,17 @@ def plot_phase_portrait(omega0: float = 1.0, ax: Any = None,
     view = (ax.get_xlim(), ax.get_ylim())
     shown = [r for r, curves in drawn.items()
              if any(np.any(visible(th, dth, view)) for _, th, dth, _ in curves)]
-    notes = ([r"labels on the curves: $c_1/\omega_0^2$"] if label else []) + (
-        ["arrows: direction of motion"] if arrows else [])
+    # The legend's title, whole, for each choice of notes: a translation sees the sentence.
+    title = {(True, True): say(r"regime (labels on the curves: $c_1/\omega_0^2$; arrows: "
+                               "direction of motion)"),
+             (True, False): say(r"regime (labels on the curves: $c_1/\omega_0^2$)"),
+             (False, True): say("regime (arrows: direction of motion)"),
+             (False, False): say("regime")}[bool(label), bool(arrows)]
+    say.dress(ax)
     readable(ax)
     # Below the x label, in one row: inside, it would hide the rotations' curves.
-    legend_below(ax, [handles[r] for r in shown], shown, ncol=4, frameon=False,
-                 title="regime" + (" (" + "; ".join(notes) + ")" if notes else ""))
+    legend_below(ax, [handles[r] for r in shown], shown, ncol=4, frameon=False, title=title,
+                 font=say.font)
     labels = _label_curves(ax, swings, kicks, omega0, shifts, rest_ms) if label else []
     if arrows:
         arrowheads_in_view(ax, drawn, view, labels)
@@ -259,12 +272,16 @@ def _label_curves(ax: Any, swings: Sequence[tuple[float, float]], kicks: Sequenc
 
 
 def plot_motion(motions: Motion | Sequence[Motion], t: npt.ArrayLike, axes: Any = None,
-                compare: bool = True, labels: Sequence[str] | None = None) -> Any:
+                compare: bool = True, labels: Sequence[str] | None = None, *,
+                language: str | None = None) -> Any:
     """Plot θ(t) and θ'(t) from the closed form, one line per motion.
 
     With ``compare``, the numerical integration (:func:`elliptic_pendulum.numerics.integrate`,
-    DOP853) is drawn as dots on top. Returns the pair of axes.
+    DOP853) is drawn as dots on top. Returns the pair of axes. ``labels`` (default: each
+    motion's regime and c1) are looked up in the language ``language`` (None: the
+    environment's) as :mod:`elliptic_pendulum.checks.verify` describes for a caller's texts.
     """
+    say = words(language)
     if isinstance(motions, Motion):
         motions = [motions]
     if axes is None:
@@ -274,7 +291,7 @@ def plot_motion(motions: Motion | Sequence[Motion], t: npt.ArrayLike, axes: Any 
     t = np.asarray(t, dtype=float)
     dots = t[:: max(1, len(t) // 40)]
     for i, m in enumerate(motions):
-        name = labels[i] if labels else f"{m.regime.value}, $c_1={m.energy_constant:.4g}$"
+        name = say(labels[i]) if labels else f"{m.regime.value}, $c_1={m.energy_constant:.4g}$"
         axes[0].plot(t, m.theta(t), color=f"C{i}", label=name)
         axes[1].plot(t, m.dtheta(t), color=f"C{i}")
         if compare:
@@ -284,9 +301,10 @@ def plot_motion(motions: Motion | Sequence[Motion], t: npt.ArrayLike, axes: Any 
     axes[0].set_ylabel(r"$\theta$")
     axes[1].set_ylabel(r"$\theta'$")
     axes[1].set_xlabel("$t$")
+    say.dress(*axes)
     for ax in axes:
         readable(ax)
-    place_legend(axes[0])
+    place_legend(axes[0], font=say.font)
     return axes
 
 

@@ -4,7 +4,8 @@ The backbone of free motion against amplitude or energy (:func:`plot_backbone`),
 response curve of the driven pendulum with its stable and unstable branches, folds and jumps
 (:func:`plot_response`), and a slow sweep over it (:func:`plot_sweep`). Like
 :mod:`elliptic_pendulum.plotting`, which re-exports them, every helper takes an optional
-``ax``, returns it, and changes no rcParams.
+``ax``, returns it, and changes no rcParams, and writes its words in ``language`` (None: the
+environment's; see ``plotting/_words.py``).
 """
 
 from __future__ import annotations
@@ -19,6 +20,7 @@ from .._validation import refuse_masked
 from ..driven.continuation import ResponseCurve
 from ..driven.resonance import backbone_frequency, duffing_backbone
 from ._base import new_axes, place_legend, readable
+from ._words import words
 
 __all__ = ["plot_backbone", "plot_response", "plot_sweep", "backbone_plot", "response_plot",
            "sweep_plot"]
@@ -26,7 +28,7 @@ __all__ = ["plot_backbone", "plot_response", "plot_sweep", "backbone_plot", "res
 
 def plot_backbone(omega0: float = 1.0, ax: Any = None, against: str = "amplitude",
                   duffing: bool = True, points: tuple[npt.ArrayLike, npt.ArrayLike] | None = None,
-                  points_label: str = "solve_ivp") -> Any:
+                  points_label: str = "solve_ivp", *, language: str | None = None) -> Any:
     r"""Plot the backbone, the frequency of free motion, against amplitude or energy.
 
     .. math:: \omega(A) = \frac{\pi\,\omega_0}{2K_1(\sin(A/2))}, \qquad
@@ -52,7 +54,9 @@ def plot_backbone(omega0: float = 1.0, ax: Any = None, against: str = "amplitude
     points : tuple of array_like, optional
         Measured (x, ω) drawn as black dots: x the amplitude in radians, or h.
     points_label : str
-        Their legend entry.
+        Their legend entry (looked up in the language's catalog, as a caller's text).
+    language : str, optional
+        The language of the figure's words ("en", "ja"); None: the environment's.
 
     Returns
     -------
@@ -86,31 +90,35 @@ def plot_backbone(omega0: float = 1.0, ax: Any = None, against: str = "amplitude
         raise ValueError(f'against must be "amplitude" or "energy", got {against!r}')
     refuse_masked(points, "points")
     w0 = float(omega0)
+    say = words(language)
     ax = new_axes(ax, figsize=(4.5, 3.8))
     A = np.linspace(0.0, math.pi * (1 - 1e-9), 800)
     exact = backbone_frequency(A, w0) / w0
     if against == "amplitude":
-        ax.plot(np.degrees(A), exact, color="C0", lw=2, label="exact")
+        ax.plot(np.degrees(A), exact, color="C0", lw=2, label=say("exact"))
         if duffing:
             ax.plot(np.degrees(A), duffing_backbone(A, w0) / w0, "--", color="C3",
-                    label=r"Duffing, $1 - A^2/16$")
+                    label=say(r"Duffing, $1 - A^2/16$"))
         if points is not None:
             ax.plot(np.degrees(points[0]), np.asarray(points[1]) / w0, "o", color="k", ms=5,
-                    label=points_label)
+                    label=say(points_label))
         ax.set(xlim=(0, 180), ylim=(0, 1.05), xticks=range(0, 181, 30),
-               xlabel="amplitude $A$ (degrees)", ylabel=r"$\omega / \omega_0$")
-        place_legend(ax, loc="lower left")
+               xlabel=say("amplitude $A$ (degrees)"), ylabel=r"$\omega / \omega_0$")
+        say.dress(ax)
+        place_legend(ax, loc="lower left", font=say.font)
         return readable(ax)
-    ax.plot(-np.cos(A), exact, color="C0", lw=2, label="swings")
+    ax.plot(-np.cos(A), exact, color="C0", lw=2, label=say("swings"))
     v = w0 * np.sqrt(2 * (1 + np.geomspace(1 + 1e-9, 4.0, 400)))
     ax.plot(v**2 / (2 * w0**2) - 1, backbone_frequency(bottom_speed=v, omega0=w0) / w0,
-            color="C2", lw=2, label="rotations")
+            color="C2", lw=2, label=say("rotations"))
     if points is not None:
-        ax.plot(points[0], np.asarray(points[1]) / w0, "o", color="k", ms=5, label=points_label)
+        ax.plot(points[0], np.asarray(points[1]) / w0, "o", color="k", ms=5,
+                label=say(points_label))
     ax.axvline(1.0, color="0.6", ls=":", lw=1)
-    ax.set(xlim=(-1, 4), ylim=(0, None), xlabel=r"energy $h = c_1/(2\omega_0^2)$",
+    ax.set(xlim=(-1, 4), ylim=(0, None), xlabel=say(r"energy $h = c_1/(2\omega_0^2)$"),
            ylabel=r"$\omega / \omega_0$")
-    place_legend(ax, loc="upper left")
+    say.dress(ax)
+    place_legend(ax, loc="upper left", font=say.font)
     return readable(ax)
 
 
@@ -119,7 +127,8 @@ def plot_response(curve: ResponseCurve, ax: Any = None, *, color: str = "C0",
                   duffing: bool = False, linear: tuple[float, float] | None = None,
                   points: tuple[npt.ArrayLike, npt.ArrayLike] | None = None,
                   folds: bool = True, jumps: bool = True,
-                  peak: bool = False, legend: str | None = "upper left") -> Any:
+                  peak: bool = False, legend: str | None = "upper left",
+                  language: str | None = None) -> Any:
     r"""Plot the response curve: periodic motions' amplitude against forcing frequency.
 
     .. math:: \theta'' + 2\zeta\omega_0\theta' + \omega_0^2\sin\theta = F\cos\Omega t
@@ -138,7 +147,8 @@ def plot_response(curve: ResponseCurve, ax: Any = None, *, color: str = "C0",
     ax : matplotlib.axes.Axes, optional
         Where to draw; a new figure when None.
     color, label : str
-        The curve's colour; its legend entry (default "stable" and "unstable").
+        The curve's colour; its legend entry (default "stable" and "unstable"; a label given is
+        looked up in the language's catalog, as a caller's text).
     omega0 : float
         ω0 of the curve, for the backbones and the small-angle response.
     backbone, duffing, folds, jumps, peak : bool
@@ -149,6 +159,8 @@ def plot_response(curve: ResponseCurve, ax: Any = None, *, color: str = "C0",
         (Ω, A) from long integrations.
     legend : str or None
         Where the legend goes (a matplotlib location), or None for none.
+    language : str, optional
+        The language of the figure's words ("en", "ja"); None: the environment's.
 
     Returns
     -------
@@ -177,6 +189,7 @@ def plot_response(curve: ResponseCurve, ax: Any = None, *, color: str = "C0",
     >>> import matplotlib.pyplot as plt; plt.close("all")
     """
     refuse_masked(points, "points")
+    say = words(language)
     ax = new_axes(ax, figsize=(8, 4.6))
     w0 = float(omega0)
     omega, amp, st = curve.frequency, curve.amplitude, curve.stable
@@ -185,28 +198,28 @@ def plot_response(curve: ResponseCurve, ax: Any = None, *, color: str = "C0",
         ax.plot(omega[i:i + 2], amp[i:i + 2], "-" if both else "--", color=color,
                 lw=2 if both else 1.5)
     if label is None:
-        ax.plot([], [], "-", color=color, lw=2, label="stable")
-        ax.plot([], [], "--", color=color, lw=1.5, label="unstable")
+        ax.plot([], [], "-", color=color, lw=2, label=say("stable"))
+        ax.plot([], [], "--", color=color, lw=1.5, label=say("unstable"))
     else:
-        ax.plot([], [], "-", color=color, lw=2, label=label)
+        ax.plot([], [], "-", color=color, lw=2, label=say(label))
     top = 1.12 * float(amp.max())  # headroom above the peak for the legend
     A = np.linspace(0.0, min(top, math.pi * (1 - 1e-9)), 600)
     if backbone:
-        ax.plot(backbone_frequency(A, w0), A, color="k", lw=1.2, label="exact backbone")
+        ax.plot(backbone_frequency(A, w0), A, color="k", lw=1.2, label=say("exact backbone"))
     if duffing:
         ax.plot(duffing_backbone(A, w0), A, "--", color="C3", lw=1.2,
-                label="Duffing's backbone")
+                label=say("Duffing's backbone"))
     if linear is not None:
         F, zeta = linear
         w = np.linspace(omega.min(), omega.max(), 400)
         ax.plot(w, F / np.abs(w0**2 - w**2 + 2j * zeta * w0 * w), ":", color="0.5",
-                label="small-angle response")
+                label=say("small-angle response"))
     if points is not None:
         ax.plot(points[0], points[1], "o", mfc="none", color="C3", ms=7,
-                label="long integration")
+                label=say("long integration"))
     if folds and curve.folds():
         fw, fa = zip(*curve.folds(), strict=True)
-        ax.plot(fw, fa, "x", color="k", ms=8, label="folds")
+        ax.plot(fw, fa, "x", color="k", ms=8, label=say("folds"))
     if jumps:
         for w_f, a_from, a_to in curve.jumps():
             ax.annotate("", xy=(w_f, a_to), xytext=(w_f, a_from),
@@ -215,15 +228,17 @@ def plot_response(curve: ResponseCurve, ax: Any = None, *, color: str = "C0",
         ax.plot(*curve.peak(), "o", color=color, ms=6)
     pad = 0.02 * float(omega.max() - omega.min())  # markers at the ends stay whole
     ax.set(xlim=(omega.min() - pad, omega.max() + pad), ylim=(0, top),
-           xlabel=r"forcing frequency $\Omega$",
-           ylabel="amplitude $A$ (rad)")
+           xlabel=say(r"forcing frequency $\Omega$"),
+           ylabel=say("amplitude $A$ (rad)"))
+    say.dress(ax)
     if legend is not None:
-        place_legend(ax, loc=legend)
+        place_legend(ax, loc=legend, font=say.font)
     return readable(ax)
 
 
 def plot_sweep(curve: ResponseCurve, up: tuple[npt.ArrayLike, npt.ArrayLike],
-               down: tuple[npt.ArrayLike, npt.ArrayLike], ax: Any = None) -> Any:
+               down: tuple[npt.ArrayLike, npt.ArrayLike], ax: Any = None, *,
+               language: str | None = None) -> Any:
     r"""Plot a slow sweep of the forcing frequency, up and down, over the response curve.
 
     .. math:: \Omega(t) = \Omega_{\text{start}} \pm r\,t
@@ -239,6 +254,8 @@ def plot_sweep(curve: ResponseCurve, up: tuple[npt.ArrayLike, npt.ArrayLike],
         (Ω, A) of each half swing of the sweep up and of the sweep down.
     ax : matplotlib.axes.Axes, optional
         Where to draw; a new figure when None.
+    language : str, optional
+        The language of the figure's words ("en", "ja"); None: the environment's.
 
     Returns
     -------
@@ -259,21 +276,23 @@ def plot_sweep(curve: ResponseCurve, up: tuple[npt.ArrayLike, npt.ArrayLike],
     """
     refuse_masked(up, "up")
     refuse_masked(down, "down")
+    say = words(language)
     ax = new_axes(ax, figsize=(8, 4.4))
     omega, amp, st = curve.frequency, curve.amplitude, curve.stable
     for i in range(len(omega) - 1):
         both = bool(st[i] and st[i + 1])
         ax.plot(omega[i:i + 2], amp[i:i + 2], "-" if both else "--", color="0.6",
                 lw=3 if both else 1.5)
-    ax.plot([], [], "-", color="0.6", lw=3, label="stable motions")
-    ax.plot([], [], "--", color="0.6", lw=1.5, label="unstable motions")
-    ax.plot(*up, ".", color="C1", ms=3, label="sweep up")
-    ax.plot(*down, ".", color="C2", ms=3, label="sweep down")
+    ax.plot([], [], "-", color="0.6", lw=3, label=say("stable motions"))
+    ax.plot([], [], "--", color="0.6", lw=1.5, label=say("unstable motions"))
+    ax.plot(*up, ".", color="C1", ms=3, label=say("sweep up"))
+    ax.plot(*down, ".", color="C2", ms=3, label=say("sweep down"))
     swept = np.concatenate([np.ravel(up[0]), np.ravel(down[0])])
     top = np.concatenate([np.ravel(up[1]), np.ravel(down[1])]).max()
     ax.set(xlim=(swept.min(), swept.max()), ylim=(0, 1.1 * top),
-           xlabel=r"forcing frequency $\Omega$", ylabel="amplitude $A$ (rad)")
-    place_legend(ax, loc="lower right", markerscale=4)
+           xlabel=say(r"forcing frequency $\Omega$"), ylabel=say("amplitude $A$ (rad)"))
+    say.dress(ax)
+    place_legend(ax, loc="lower right", markerscale=4, font=say.font)
     return readable(ax)
 
 

@@ -17,13 +17,15 @@ import numpy as np
 
 from ..motion import solve
 from ._base import readable, text_size
+from ._words import words
 from .phase import plot_phase_portrait
 
 __all__ = ["plot_potential_well"]
 
 
 def plot_potential_well(omega0: float = 1.0, axes: Any = None, swing_deg: float = 90.0,
-                        kick: float = 1.3, window: float = 2.5 * math.pi) -> Any:
+                        kick: float = 1.3, window: float = 2.5 * math.pi, *,
+                        language: str | None = None) -> Any:
     r"""Draw the well :math:`-2\cos\theta` above the phase portrait, with four energy levels.
 
     The upper axes show the potential energy :math:`-2\cos\theta` and, as horizontal lines,
@@ -49,6 +51,8 @@ def plot_potential_well(omega0: float = 1.0, axes: Any = None, swing_deg: float 
         θ'(0) / (2 ω0) of the rotation started at the bottom (kick > 1).
     window : float
         Half-width of the θ range drawn.
+    language : str, optional
+        The language of the figure's words ("en", "ja"); None: the environment's.
 
     Returns
     -------
@@ -79,6 +83,7 @@ def plot_potential_well(omega0: float = 1.0, axes: Any = None, swing_deg: float 
 
         _, axes = plt.subplots(2, 1, figsize=(9, 8.5), sharex=True, layout="constrained",
                                height_ratios=(2, 3))
+    say = words(language)
     axes = np.asarray(axes)
     well, phase = axes.ravel()
     w2 = omega0 ** 2
@@ -86,10 +91,10 @@ def plot_potential_well(omega0: float = 1.0, axes: Any = None, swing_deg: float 
     swing = solve(theta0, 0.0, omega0)
     spin = solve(0.0, 2 * omega0 * kick, omega0)
     # (regime, name, c1 / w0^2, colour): the colours of the regimes in plot_phase_portrait.
-    levels = [("I", "rest", -2.0, "C3"),
-              ("II", "swing", swing.energy_constant / w2, "C0"),
-              ("III", "separatrix", 2.0, "C3"),
-              ("IV", "rotation", spin.energy_constant / w2, "C2")]
+    levels = [("I", say("rest"), -2.0, "C3"),
+              ("II", say("swing"), swing.energy_constant / w2, "C0"),
+              ("III", say("separatrix"), 2.0, "C3"),
+              ("IV", say("rotation"), spin.energy_constant / w2, "C2")]
 
     th = np.linspace(-window, window, 1201)
     u = -2.0 * np.cos(th)
@@ -101,7 +106,8 @@ def plot_potential_well(omega0: float = 1.0, axes: Any = None, swing_deg: float 
         well.plot(th, inside, color=color, lw=2.5, label=regime)
         well.plot(th, outside, color=color, lw=1, ls=":", label="_" + regime)
         place = ("top", -0.25) if regime == "I" else ("bottom", 0.12)
-        well.text(0.0, c1 + place[1], f"{regime}: {name}", color=color, fontsize=size,
+        well.text(0.0, c1 + place[1], say("{numeral}: {name}", numeral=regime, name=name),
+                  color=color, fontsize=size,
                   ha="center", va=place[0],
                   bbox=dict(boxstyle="round,pad=0.1", fc="white", ec="none", alpha=0.9))
     well.plot([0.0], [-2.0], "o", color="C3", ms=7, label="_rest")
@@ -112,7 +118,9 @@ def plot_potential_well(omega0: float = 1.0, axes: Any = None, swing_deg: float 
     well.set_ylim(-3.1, top + 1.2)
     well.set_ylabel(r"$c_1/\omega_0^2$")
 
-    plot_phase_portrait(omega0, ax=phase, window=window, xlim=(-window, window))
+    say.dress(well)
+    plot_phase_portrait(omega0, ax=phase, window=window, xlim=(-window, window),
+                        language=language)
     shifts = 2 * math.pi * np.arange(-math.floor(window / (2 * math.pi) + 0.5),
                                      math.floor(window / (2 * math.pi) + 0.5) + 1)
     t = np.linspace(0.0, swing.period, 600)

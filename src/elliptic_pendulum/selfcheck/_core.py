@@ -24,11 +24,12 @@ from __future__ import annotations
 import importlib
 import importlib.util
 import math
-import os
-from collections.abc import Callable, Mapping
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from functools import cache
 from typing import Any
+
+from .. import _i18n
 
 # Exercise label -> Exercise, filled by the chapter modules.
 EXERCISES: dict[str, Exercise] = {}
@@ -219,33 +220,24 @@ ENGLISH = {
 ENGLISH_KINDS = {float: "a number", int: "a whole number", bool: "True or False",
                  str: "a string"}
 ENGLISH_OTHER_KIND = "a {kind}"
-# Where gettext looks for the language of messages, in its order.
-LANGUAGE_VARIABLES = ("LANGUAGE", "LC_ALL", "LC_MESSAGES", "LANG")
+# Where gettext looks for the language of messages, in its order (the package's one list).
+LANGUAGE_VARIABLES = _i18n.LANGUAGE_VARIABLES
 
 
 def environment_language(environ: dict[str, str] | None = None) -> str:
     """Return the language of the messages as gettext would choose it from the environment.
 
     The first of LANGUAGE (a colon-separated list), LC_ALL, LC_MESSAGES and LANG that is set
-    decides: its first entry with messages here wins ("ja_JP.UTF-8" is "ja"); "C", "POSIX"
-    or an entry with none gives English.
+    decides: its first entry with self-check messages here wins ("ja_JP.UTF-8" is "ja");
+    "C", "POSIX" or an entry with none gives English. The package's rule
+    (``elliptic_pendulum._i18n.environment_language``), with the self-checks' languages.
 
     >>> environment_language({"LANG": "ja_JP.UTF-8"}), environment_language({})
     ('ja', 'en')
     >>> environment_language({"LANGUAGE": "fr:ja", "LANG": "en_US.UTF-8"})
     'ja'
     """
-    env: Mapping[str, str] = os.environ if environ is None else environ
-    for variable in LANGUAGE_VARIABLES:
-        value = env.get(variable, "")
-        if not value:
-            continue
-        for entry in value.split(":"):
-            code = entry.split(".")[0].split("@")[0].split("_")[0]
-            if code == "en" or (code.isidentifier() and _has_messages(code)):
-                return code
-        return "en"
-    return "en"
+    return _i18n.environment_language(environ, _has_messages)
 
 
 def _has_messages(language: str) -> bool:

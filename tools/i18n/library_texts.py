@@ -1,0 +1,153 @@
+"""The texts the book's cells pass to the library for a reader, as a gettext template.
+
+A verdict or a figure in the Japanese edition is written by the library in Japanese, but the
+words a cell passes in are the cell's: a fact's sentence, a numerical check's ``over``,
+``measure`` and ``mutant_label``, a statement's ``mutant_label`` and ``domain_md``, a claim
+named in words ("§3, case II"), a figure's ``labels``, ``label`` or ``points_label``. The
+library looks each up, exact English to Japanese, in the catalog that the environment
+variable ``ELLIPTIC_PENDULUM_MESSAGES`` names (see ``elliptic_pendulum.checks.verify``).
+This finds them in the pages' code cells and writes them as a .pot file, one message per
+distinct text, with the pages and lines that pass it. A text built by an f-string cannot be
+a catalog's key: it is listed apart, to become a template with ``values=``.
+
+    python -m tools.i18n.library_texts book out.pot
+"""
+
+from __future__ import annotations
+
+import ast
+import re
+import sys
+from dataclasses import dataclass
+from pathlib import Path
+
+
+def _cells(source: str):
+    """Yield (line before the code's first line, code) for each code cell of a page.
+
+    The cell's options (a ``---`` block or ``:key:`` lines) are left out, so that a line of
+    the code is the returned line plus its line number in the code.
+    """
+    lines = source.splitlines()
+    i = 0
+    while i < len(lines):
+        if lines[i].startswith("```{code-cell}"):
+            j = i + 1
+            while j < len(lines) and not lines[j].startswith("```"):
+                j += 1
+            body, start = lines[i + 1:j], i + 1  # start: the 1-based line of the fence
+            if body and body[0].strip() == "---" and "---" in body[1:]:
+                end = body.index("---", 1) + 1
+                body, start = body[end:], start + end
+            while body and body[0].startswith(":"):
+                body, start = body[1:], start + 1
+            yield start, "\n".join(body)
+            i = j
+        i += 1
+
+# (receiver or None, function) -> the arguments that carry text: positions and keywords.
+_VERIFY = {"fact": ((2,), ()), "numeric": ((), ("over", "measure", "mutant_label"))}
+_STATEMENT = ("mutant_label", "domain_md")
+_FIGURE = ("labels", "label", "points_label")
+
+
+@dataclass(frozen=True)
+class Text:
+    """A text a cell passes: where, to what, and whether it is a literal (else an f-string)."""
+
+    text: str
+    page: str
+    line: int
+    argument: str
+    literal: bool
+
+
+def _words(text: str) -> bool:
+    # Text outside math with a word in it: "$4\\pi/\\omega_0$" or "(26)" needs no translation.
+    return re.search(r"[A-Za-z]{2,}", re.sub(r"\$[^$]*\$", "", text)) is not None
+
+
+def _texts_of(node: ast.AST) -> list[tuple[str, bool]]:
+    if isinstance(node, ast.Constant) and isinstance(node.value, str):
+        return [(node.value, True)]
+    if isinstance(node, ast.JoinedStr):
+        return [(ast.unparse(node), False)]
+    if isinstance(node, (ast.List, ast.Tuple)):
+        return [t for e in node.elts for t in _texts_of(e)]
+    return []
+
+
+def _figure_functions() -> set[str]:
+    import elliptic_pendulum.plotting as epp
+
+    return {*epp.__all__, "animate", "animation_html"}
+
+
+def texts(book: Path) -> list[Text]:
+    """Return the texts the cells of the pages directly in ``book`` pass to the library."""
+    figures = _figure_functions()
+    found = []
+    for page in sorted(book.glob("*.md")):
+        for first, code in _cells(page.read_text(encoding="utf-8")):
+            try:
+                tree = ast.parse(code)
+            except SyntaxError:
+                continue
+            calls = sorted((n for n in ast.walk(tree) if isinstance(n, ast.Call)),
+                           key=lambda n: (n.lineno, n.col_offset))
+            for call in calls:
+                func = call.func
+                name = func.attr if isinstance(func, ast.Attribute) else getattr(func, "id", "")
+                owner = ast.unparse(func.value) if isinstance(func, ast.Attribute) else ""
+                carried: list[tuple[str, ast.AST]] = []
+                if owner == "verify" and name in _VERIFY:
+                    positions, keywords = _VERIFY[name]
+                    carried += [("claim", call.args[0])] if call.args else []
+                    carried += [(name, call.args[i]) for i in positions if i < len(call.args)]
+                    carried += [(k.arg, k.value) for k in call.keywords if k.arg in keywords]
+                elif name == "Identity":
+                    carried += [(f"Identity {k.arg}", k.value) for k in call.keywords
+                                if k.arg in _STATEMENT]
+                    carried += [("claim", call.args[1])] if len(call.args) > 1 else []
+                elif name in figures:
+                    carried += [(f"{name} {k.arg}", k.value) for k in call.keywords
+                                if k.arg in _FIGURE]
+                for argument, node in carried:
+                    for text, literal in _texts_of(node):
+                        if _words(text):
+                            found.append(Text(text, page.stem, first + call.lineno,
+                                              argument, literal))
+    return found
+
+
+def _quoted(text: str) -> str:
+    return '"' + text.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n") + '"'
+
+
+def pot(found: list[Text]) -> str:
+    """Return the literal texts as a gettext template, each once, with where it is passed."""
+    where: dict[str, list[str]] = {}
+    for t in found:
+        if t.literal:
+            where.setdefault(t.text, []).append(f"{t.page}.md:{t.line}")
+    out = ['msgid ""', 'msgstr ""', '"Content-Type: text/plain; charset=UTF-8\\n"', ""]
+    for text, places in where.items():
+        out += [f"#: {' '.join(places)}", f"msgid {_quoted(text)}", 'msgstr ""', ""]
+    return "\n".join(out)
+
+
+def main(argv: list[str]) -> int:
+    book, target = Path(argv[0]), Path(argv[1])
+    found = texts(book)
+    target.write_text(pot(found), encoding="utf-8")
+    literal = {t.text for t in found if t.literal}
+    print(f"{len(found)} texts passed, {len(literal)} distinct literals written to {target}")
+    for t in found:
+        if not t.literal:
+            print(f"f-string (make it a template with values=): {t.page}.md:{t.line} "
+                  f"{t.argument}: {t.text}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
