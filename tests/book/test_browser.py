@@ -1,8 +1,9 @@
 """A reader's view of the built book and reference site, in headless Chromium, offline.
 
-Every page of both builds is opened from file:// at desktop (1280 and 1200 px) and phone
-(400 px) width, with every host name unresolvable, and looked at once MathJax (served from
-the build) has finished typesetting (``MathJax.startup.promise``):
+Every page of both builds is opened from file:// at desktop (1280 px, then the window
+narrowed to 1200 px: look_at) and phone (400 px) width, with every host name unresolvable,
+and looked at once MathJax (served from the build) has finished typesetting
+(``MathJax.startup.promise``):
 
 * no MathJax error (``mjx-merror``, e.g. "\\tag not allowed in split environment");
 * the equation numbers MathJax renders across the book (its ``mjx-eqn:N`` ids) are exactly
@@ -62,6 +63,9 @@ pytestmark = pytest.mark.slow
 # narrowest there), and a phone.
 WIDTHS = (1280, 1200, 400)
 DESKTOPS = (1280, 1200)
+# The browser's visits: the desktop widths in one (the page loaded at 1280 px, then the
+# window narrowed: look_at), the phone in its own (a mobile viewport, loaded as a phone does).
+VISITS = (DESKTOPS, (400,))
 # axe-core runs every WCAG 2.1 A and AA rule at 1280 and 400 px. At 1200 px the page is the
 # 1280 px page in a column 80 px narrower: what can change is layout, so the rules that read
 # it run there (text against what is drawn behind it, boxes that scroll), at a fraction of
@@ -382,30 +386,63 @@ BESIDES = {"book": ("reference", "ja", "student"), "ja": (), "docs": ()}
 SITES = ("book", "ja", "docs")
 
 
+def _metrics(browser: Browser, width: int) -> None:
+    browser.call("Emulation.setDeviceMetricsOverride", session=True, width=width,
+                 height=HEIGHT, deviceScaleFactor=1, mobile=width < 600)
+
+
+# After a resize: the theme's own response to it, which pydata-sphinx-theme debounces by
+# 300 ms (its scripts' addTabStopsToScrollableElements: a box that now scrolls sideways gets
+# its tab stop then, as it does at load), then two animation frames to lay the page out.
+RELAID = ("new Promise(r => setTimeout(() => requestAnimationFrame(() =>"
+          " requestAnimationFrame(() => r(true))), 450))")
+
+
 def look_at(
     browser: Browser, html_dir: Path, width: int, besides: tuple[str, ...] = (),
-    axe: str = "",
-) -> Iterator[tuple[str, dict]]:
-    browser.call(
-        "Emulation.setDeviceMetricsOverride",
-        session=True,
-        width=width,
-        height=HEIGHT,
-        deviceScaleFactor=1,
-        mobile=width < 600,
-    )
+    axe: str = "", narrower: tuple[int, ...] = (),
+) -> Iterator[tuple[int, str, dict]]:
+    """(width, page, what the browser saw) for every page of ``html_dir``, opened at
+    ``width``, then looked at again at each of the ``narrower`` desktop widths.
+
+    A desktop width below the first is the same page in a narrower window: the theme lays it
+    out by CSS alone (1200 and 1280 px fall in the same breakpoint of its grid), and MathJax
+    does not typeset again on a resize. So the page is not loaded and typeset again for it:
+    the window is narrowed, the page laid out again, and looked at (LOOK), axe-core's layout
+    rules run and a screenshot taken at that width. Loads, requests and script errors are
+    the page's, from its one load.
+    """
+    _metrics(browser, width)
     shots = html_dir / "_screenshots"
     shots.mkdir(exist_ok=True)
+
+    def shoot(name: str, seen: dict, at: int) -> None:
+        # The whole page, as a reader scrolls it (capped: the API page is long).
+        shot = browser.call(
+            "Page.captureScreenshot",
+            session=True,
+            format="jpeg",
+            quality=70,
+            captureBeyondViewport=True,
+            clip={"x": 0, "y": 0, "width": at, "height": min(seen["height"], 12000), "scale": 1},
+        )
+        target = shots / f"{name.replace('/', '_').removesuffix('.html')}-{at}.jpg"
+        target.write_bytes(base64.b64decode(shot["data"]))
+        seen["screenshot"] = str(target)
+
+    def check(seen: dict, at: int) -> None:
+        if axe:
+            start = time.perf_counter()
+            seen["axe"] = run_axe(browser, axe, LAYOUT_RULES.get(at))
+            seen["axe"]["seconds"] = time.perf_counter() - start
+
     for page in pages(html_dir, *besides):
         name = str(page.relative_to(html_dir))
         browser.events()
         browser.call("Page.navigate", session=True, url=page.as_uri())
         browser.wait_for("Page.loadEventFired")
         seen = browser.evaluate(LOOK)
-        if axe:
-            start = time.perf_counter()
-            seen["axe"] = run_axe(browser, axe, LAYOUT_RULES.get(width))
-            seen["axe"]["seconds"] = time.perf_counter() - start
+        check(seen, width)
         if name == "in_motion.html":
             seen["player"] = browser.evaluate(PLAYER_KEYS)
         events = browser.events()
@@ -438,19 +475,27 @@ def look_at(
             for e in events
             if e.get("method") == "Runtime.exceptionThrown"
         ]
-        # The whole page, as a reader scrolls it (capped: the API page is long).
-        shot = browser.call(
-            "Page.captureScreenshot",
-            session=True,
-            format="jpeg",
-            quality=70,
-            captureBeyondViewport=True,
-            clip={"x": 0, "y": 0, "width": width, "height": min(seen["height"], 12000), "scale": 1},
-        )
-        target = shots / f"{name.replace('/', '_').removesuffix('.html')}-{width}.jpg"
-        target.write_bytes(base64.b64decode(shot["data"]))
-        seen["screenshot"] = str(target)
-        yield name, seen
+        shoot(name, seen, width)
+        yield width, name, seen
+        for at in narrower:
+            _metrics(browser, at)
+            browser.evaluate(RELAID)
+            again = browser.evaluate(LOOK)
+            check(again, at)
+            later = browser.events()  # a resize loads nothing and throws nothing new
+            again["network"] = seen["network"] + sorted(
+                {e["params"]["request"]["url"] for e in later
+                 if e.get("method") == "Network.requestWillBeSent"})
+            again["failed"] = seen["failed"] + sorted(
+                {str(e["params"].get("errorText")) for e in later
+                 if e.get("method") == "Network.loadingFailed"})
+            again["exceptions"] = seen["exceptions"] + [
+                e["params"]["exceptionDetails"].get("text", "") for e in later
+                if e.get("method") == "Runtime.exceptionThrown"]
+            shoot(name, again, at)
+            yield at, name, again
+        if narrower:
+            _metrics(browser, width)
 
 
 @pytest.fixture(scope="module")
@@ -474,18 +519,28 @@ def survey(
 ) -> dict:
     """(site, width) -> {page: what the browser saw}, for every page of the three sites."""
 
-    def visit(site: str, width: int) -> tuple[dict, float]:
+    def visit(site: str, widths: tuple[int, ...]) -> dict[tuple[str, int], tuple[dict, float]]:
         browser = Browser(chromium, tmp_path_factory.mktemp("chromium-profile"))
+        seen: dict[int, dict] = {width: {} for width in widths}
+        spent = dict.fromkeys(widths, 0.0)
         start = time.perf_counter()
         try:
-            return (dict(look_at(browser, folders[site], width, BESIDES[site], axe_script)),
-                    time.perf_counter() - start)
+            for width, page, what in look_at(browser, folders[site], widths[0], BESIDES[site],
+                                             axe_script, widths[1:]):
+                seen[width][page] = what
+                spent[width] += time.perf_counter() - start
+                start = time.perf_counter()
         finally:
             browser.close()
+        return {(site, width): (seen[width], spent[width]) for width in widths}
 
-    keys = [(site, width) for site in SITES for width in WIDTHS]
+    # One visit per site and VISITS entry: the desktop widths share their page loads.
+    visits = [(site, widths) for site in SITES for widths in VISITS]
+    results: dict[tuple[str, int], tuple[dict, float]] = {}
     with ThreadPoolExecutor(max_workers=PARALLEL) as pool:
-        results = dict(zip(keys, pool.map(lambda key: visit(*key), keys), strict=True))
+        for done in pool.map(lambda visit_: visit(*visit_), visits):
+            results.update(done)
+    keys = [(site, width) for site in SITES for width in WIDTHS]
     found = {key: results[key][0] for key in keys}
     seconds = {key: results[key][1] for key in keys}
     # What the survey costs, per site and width (the CI budget is counted in minutes).
