@@ -22,6 +22,7 @@ from .dd import PI_LO as _PI_LO
 from .dd import SPLIT as _SPLIT
 from .dd import fast_two_sum as _fast_two_sum
 from .dd import two_sum as _two_sum
+from .levels import root, root_into, step, step_into
 
 __all__ = ["CHUNK", "SCALARS", "Constants", "complement", "constants", "constants_float",
            "pad", "quarter_period"]
@@ -91,57 +92,6 @@ def pad(levels: tuple, n: int) -> tuple:
     return tuple(levels) + (levels[-1],) * (n - len(levels))
 
 
-def _step(ah, al, bh, bl, a1, a2):
-    """Return the mean c = (a + b)/2 and the product p = a b of one level (double-doubles).
-
-    The operations of :mod:`.dd`'s two_sum, fast_two_sum and mul, in their order (so M
-    and K come out to the bit as from those functions), with Dekker's split a1 + a2 of ah
-    carried from the level before. Also returns s = fl(ah + bh) for :func:`_mean`.
-    """
-    s = ah + bh
-    z = s - ah
-    t = 0.5 * ((((ah - (s - z)) + (bh - z)) + al) + bl)
-    h = 0.5 * s
-    ch = h + t
-    cl = t - (ch - h)
-    ph = ah * bh
-    u = _SPLIT * bh
-    b1 = u - (u - bh)
-    b2 = bh - b1
-    e = ((((a1 * b1 - ph) + a1 * b2 + a2 * b1) + a2 * b2) + (ah * bl + al * bh))
-    x = ph + e
-    return s, ch, cl, x, e - (x - ph)
-
-
-def _root(ph, pl, ch, cl, root):
-    """Return b = sqrt(p) (as :func:`.dd.sqrt`), and the ratio b / c rounded once.
-
-    The ratio is q = fl(bh / ch) corrected by the exact residual bh - q ch (bh - fl(q ch)
-    is exact: Sterbenz), so it is b / c rounded once, as the double-double division gave
-    it; delta = its relative rounding error, which :func:`_last` needs. Returns b (hi, lo),
-    the split of ch (the next level's a), the ratio and delta.
-    """
-    x = root(ph)
-    t = _SPLIT * x
-    x1 = t - (t - x)
-    x2 = x - x1
-    xx = x * x
-    r = (((ph - xx) - (((x1 * x1 - xx) + x1 * x2 + x2 * x1) + x2 * x2)) + pl) / (2.0 * x)
-    bh = x + r
-    bl = r - (bh - x)
-    q = bh / ch
-    t = _SPLIT * ch
-    c1 = t - (t - ch)
-    c2 = ch - c1
-    t = _SPLIT * q
-    q1 = t - (t - q)
-    q2 = q - q1
-    t = q * ch
-    corr = (((bh - t) - (((q1 * c1 - t) + q1 * c2 + q2 * c1) + q2 * c2)) + (bl - q * cl)) / ch
-    ratio = q + corr
-    return bh, bl, c1, c2, ratio, ((ratio - q) - corr) / ratio
-
-
 def _mean(diff, s, ch, cl):
     """M = c (1 - r^2/4), r = (a - b)/(a + b), where a - b <= 1e-8 a (see _NEAR)."""
     r = diff / s
@@ -183,7 +133,7 @@ def _quarters(mh, ml):
 def _piece(kc: Any, kc_lo: Any) -> Constants:
     """Compute :func:`_constants` of one piece: one double-double AGM serves K and `core`.
 
-    The AGM M(1, kc + kc_lo) runs in double-double arithmetic (:func:`_step`, :func:`_root`),
+    The AGM M(1, kc + kc_lo) runs in double-double arithmetic (:mod:`.levels`),
     seeded with kc (never with 1 - k**2), for K = pi / (2 M) to about 1e-32 relative; its
     levels give the descending Landen sequence a_n (``mu``, rounded to double) and the
     ratios b_n / a_n (``rho``, each rounded once), and `core` takes d = rho + (1 - rho) s,
@@ -217,20 +167,24 @@ def _piece(kc: Any, kc_lo: Any) -> Constants:
     # What an element keeps from its last level: M, the product p and the drift there.
     kept = [np.empty(size) for _ in range(5)]
     idx = None  # the elements still in the arrays, by position (None: all, in order)
+    buffers = [np.empty(size) for _ in range(16)]
+    work = buffers
+    done = np.zeros(size, dtype=bool)  # by position in the arrays, like them
     for level in range(1, 61):  # 12 steps at kc = 1e-300; the cap guards a bug
-        diff = (ah - bh) + (al - bl)  # a - b >= 0 (exact at the top: Sterbenz)
-        s, ch, cl, ph, pl = _step(ah, al, bh, bl, a1, a2)
-        near = diff <= _NEAR * ah
-        gone = stop < level if idx is None else stop[idx] < level
-        new = near & ~gone
+        diff = np.subtract(ah, bh, out=work[9])  # a - b >= 0 (exact at the top: Sterbenz)
+        np.add(diff, np.subtract(al, bl, out=work[10]), out=diff)
+        s, ch, cl, ph, pl = step_into(ah, al, bh, bl, a1, a2, work)
+        near = diff <= np.multiply(ah, _NEAR, out=work[10])
+        new = near & ~done
         if np.any(new):
-            mh, ml = _mean(diff, s, ch, cl)
             where = np.nonzero(new)[0]
             at = where if idx is None else idx[where]
-            for out, x in zip(kept, (mh, ml, ph, pl, drift), strict=True):
+            kept[0][at], kept[1][at] = _mean(diff[where], s[where], ch[where], cl[where])
+            for out, x in zip(kept[2:], (ph, pl, drift), strict=True):
                 out[at] = x[where]
             stop[at] = level
-        live = ~(near | gone)
+        done |= near
+        live = ~done
         count = int(np.count_nonzero(live))
         if idx is None:
             mu.append(ch)
@@ -244,10 +198,13 @@ def _piece(kc: Any, kc_lo: Any) -> Constants:
         if 2 * count <= live.size:  # gather the elements still iterating
             keep = np.nonzero(live)[0]
             idx = keep if idx is None else idx[keep]
-            ch, cl, ph, pl, drift = (x[keep] for x in (ch, cl, ph, pl, drift))
-        bh, bl, a1, a2, ratio, delta = _root(ph, pl, ch, cl, np.sqrt)
+            ch, cl, drift = ch[keep], cl[keep], drift[keep]
+            ph, pl = ph[keep], pl[keep]
+            work = [x[:count] for x in buffers]
+            done = np.zeros(count, dtype=bool)
+        bh, bl, a1, a2, ratio, delta = root_into(ph, pl, ch, cl, work[10:])
         ah, al = ch, cl
-        drift = drift + delta
+        np.add(drift, delta, out=drift)
         if idx is None:
             rho.append(ratio)
         else:
@@ -258,14 +215,18 @@ def _piece(kc: Any, kc_lo: Any) -> Constants:
         raise RuntimeError("AGM did not converge")
     mh, ml, ph, pl, drift = kept
     last = _last(ph, pl, mh, ml, drift)
-    mu = [mu[0], *(np.where(stop <= n, last, a) for n, a in enumerate(mu[1:], 1))]
-    rho = [rho[0], *(np.where(stop <= n, 1.0, r) for n, r in enumerate(rho[1:], 1))]
+    first = int(stop.min(initial=61.0))  # below it no element has stopped: nothing to mend
+    for n in range(first, len(mu)):  # each level array is the piece's own
+        np.copyto(mu[n], last, where=stop <= n)
+        np.copyto(rho[n], 1.0, where=stop <= n)
     mu, rho = [x.reshape(shape) for x in mu], [x.reshape(shape) for x in rho]
     kc, mh, ml = kc.reshape(shape), mh.reshape(shape), ml.reshape(shape)
     quarter, k_hi, k_mid, k_lo = _quarters(mh, ml)
-    return Constants(np.where(top, 0.0, kc), np.where(top, np.inf, quarter),
-                     np.where(top, np.inf, k_hi), np.where(top, 0.0, k_mid),
-                     np.where(top, 0.0, k_lo), mh, ml, tuple(mu), tuple(rho))
+    if np.any(top):
+        kc, quarter, k_hi = np.where(top, 0.0, kc), np.where(top, np.inf, quarter), \
+            np.where(top, np.inf, k_hi)
+        k_mid, k_lo = np.where(top, 0.0, k_mid), np.where(top, 0.0, k_lo)
+    return Constants(kc, quarter, k_hi, k_mid, k_lo, mh, ml, tuple(mu), tuple(rho))
 
 
 @lru_cache(maxsize=256)
@@ -277,13 +238,13 @@ def _constants_float(kc: float, kc_lo: float) -> Constants:
     mu, rho = [ah], [bh]
     while True:
         diff = (ah - bh) + (al - bl)
-        s, ch, cl, ph, pl = _step(ah, al, bh, bl, a1, a2)
+        s, ch, cl, ph, pl = step(ah, al, bh, bl, a1, a2)
         if diff <= _NEAR * ah:
             mh, ml = _mean(diff, s, ch, cl)
             mu.append(_last(ph, pl, mh, ml, drift))
             rho.append(1.0)
             break
-        bh, bl, a1, a2, ratio, delta = _root(ph, pl, ch, cl, math.sqrt)
+        bh, bl, a1, a2, ratio, delta = root(ph, pl, ch, cl, math.sqrt)
         ah, al = ch, cl
         drift = drift + delta
         mu.append(ah)
