@@ -156,20 +156,10 @@ def evaluate(u, c: Constants, u_lo=0.0, amplitude: bool | str = False, name: str
                          "2**26 quarter periods (about 6.7e7 K1) for an exact reduction")
     s, cn_v, dn_v, ratio = core(v, c, v_lo)
     odd = (q == 1.0) | (q == 3.0)
-    even = ~odd
-    minus = q >= 2.0
-    # sn = sign (odd ? cn_v / dn_v : s), cn = sign (odd ? -kc s / dn_v : cn_v) and
-    # dn = odd ? kc / dn_v : dn_v, sign = -1 from 2K on: the same operations, in place.
-    shape = np.broadcast_shapes(np.shape(s), np.shape(cn_v), np.shape(dn_v), np.shape(q))
-    sn = np.divide(cn_v, dn_v, out=np.empty(shape))
-    np.copyto(sn, s, where=even)
-    np.negative(sn, out=sn, where=minus)
-    cn = np.multiply(np.negative(c.kc), s, out=np.empty(shape))
-    np.divide(cn, dn_v, out=cn)
-    np.copyto(cn, cn_v, where=even)
-    np.negative(cn, out=cn, where=minus)
-    dn = np.divide(c.kc, dn_v, out=np.empty(shape))
-    np.copyto(dn, dn_v, where=even)
+    sign = np.where(q >= 2.0, -1.0, 1.0)
+    sn = sign * np.where(odd, cn_v / dn_v, s)
+    cn = sign * np.where(odd, -c.kc * s / dn_v, cn_v)
+    dn = np.where(odd, c.kc / dn_v, dn_v)
     careful = careful & (c.kc < _careful.SMALL_KC) & (c.kc >= _TINY_KC)
     if np.any(careful):
         sn, cn, dn, s, cn_v, ratio = _careful.overwrite(careful, q, v, v_lo, c,
