@@ -17,11 +17,11 @@ from typing import Any, NamedTuple
 import numpy as np
 
 from . import dd as _dd
+from . import ends as _ends
 from .dd import PI_HI as _PI_HI
 from .dd import PI_LO as _PI_LO
 from .dd import SPLIT as _SPLIT
 from .dd import fast_two_sum as _fast_two_sum
-from .dd import two_sum as _two_sum
 from .levels import root, root_into, step, step_into
 
 __all__ = ["CHUNK", "SCALARS", "Constants", "complement", "constants", "constants_float",
@@ -122,7 +122,10 @@ def _last(ph, pl, mh, ml, drift):
 
 
 def _quarters(mh, ml):
-    """K = pi / (2 M) as a double-double, and split in three parts (Cody and Waite)."""
+    """K = pi / (2 M) as a double-double, split in three parts (Cody and Waite), on floats.
+
+    Arrays take :func:`.ends.quarter_parts`, the same operations in place.
+    """
     kh, kl = _dd.div(0.5 * _PI_HI + 0.0 * mh, 0.5 * _PI_LO + 0.0 * mh, mh, ml)
     k_hi = _chop(kh)
     k_mid = _chop(kh - k_hi + kl)
@@ -221,7 +224,7 @@ def _piece(kc: Any, kc_lo: Any) -> Constants:
         np.copyto(rho[n], 1.0, where=stop <= n)
     mu, rho = [x.reshape(shape) for x in mu], [x.reshape(shape) for x in rho]
     kc, mh, ml = kc.reshape(shape), mh.reshape(shape), ml.reshape(shape)
-    quarter, k_hi, k_mid, k_lo = _quarters(mh, ml)
+    quarter, k_hi, k_mid, k_lo = _ends.quarter_parts(mh, ml)
     if np.any(top):
         kc, quarter, k_hi = np.where(top, 0.0, kc), np.where(top, np.inf, quarter), \
             np.where(top, np.inf, k_hi)
@@ -279,13 +282,7 @@ def complement(k: Any) -> tuple[Any, Any]:
     every period of u: sn(1e4, k) would lose three digits. With the low part
     the AGM is seeded with kc to about 1e-32.
     """
-    k = np.asarray(k, dtype=float)
-    a, a_lo = _two_sum(1.0, -k)
-    b, b_lo = _two_sum(1.0, k)
-    p, p_lo = _dd.mul(a, a_lo, b, b_lo)
-    with np.errstate(divide="ignore", invalid="ignore"):  # k = 1: kc = 0 exactly
-        hi, lo = _dd.sqrt(p, p_lo, np.sqrt)
-    return np.where(p == 0, 0.0, hi), np.where(p == 0, 0.0, lo)
+    return _ends.complement(np.asarray(k, dtype=float))  # the operations of dd, in place
 
 
 def quarter_period(kc: Any, kc_lo: Any = 0.0) -> Any:
