@@ -4,7 +4,8 @@ The level of :mod:`.agm` takes a = ah + al and b = bh + bl (a >= b > 0, Dekker's
 a1 + a2 of ah carried from the level before) to the mean c = (a + b)/2 and the product
 p = a b (:func:`step`), then b' = sqrt(p) and the ratio b' / c rounded once (:func:`root`).
 The operations are those of :mod:`.dd`'s two_sum, fast_two_sum, mul and sqrt, in their
-order, so M and K come out to the bit as from those functions.
+order (two_sum's error as fast_two_sum gives it, the same exact error), so M and K come
+out to the bit as from those functions.
 
 Each has an array twin that does the same operations in the same order into buffers
 given by the caller (``out=``): IEEE arithmetic rounds each operation alike either way, so
@@ -27,12 +28,14 @@ _add, _sub, _mul, _div = np.add, np.subtract, np.multiply, np.divide
 def step(ah, al, bh, bl, a1, a2):
     """Return s = fl(ah + bh), the mean c = (a + b)/2 and the product p = a b (ch, cl, ph, pl).
 
-    fast_two_sum is exact on (ah, bh) as a >= b. p's low part keeps the cross terms to
-    first order (the dropped al bl is below 1e-32 of p).
+    The error of s comes from fast_two_sum, not two_sum: both give the exact error, hence
+    the same double, as ah >= bh (or the two are within a factor 2, where ah - s and bh - z
+    are exact by Sterbenz). p's low part keeps the cross terms to first order (the dropped
+    al bl is below 1e-32 of p).
     """
     s = ah + bh
     z = s - ah
-    t = 0.5 * ((((ah - (s - z)) + (bh - z)) + al) + bl)
+    t = 0.5 * (((bh - z) + al) + bl)
     h = 0.5 * s
     ch = h + t
     cl = t - (ch - h)
@@ -53,10 +56,7 @@ def step_into(ah, al, bh, bl, a1, a2, work):
     s, z, t, h, u, b1, b2, e, f = work[:9]
     _add(ah, bh, out=s)
     _sub(s, ah, out=z)
-    _sub(s, z, out=t)
-    _sub(ah, t, out=t)
-    _sub(bh, z, out=h)
-    _add(t, h, out=t)
+    _sub(bh, z, out=t)
     _add(t, al, out=t)
     _add(t, bl, out=t)
     _mul(t, 0.5, out=t)
