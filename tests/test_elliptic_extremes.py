@@ -258,3 +258,30 @@ def test_near_one_from_above_boost_like_rows():
             exact = _mp_jacobi(u, k)
             assert _ulps(s[i], exact[0]) <= 5 and _ulps(c[i], exact[1]) <= 8
             assert _ulps(d[i], exact[2]) <= 8, (u, k)
+
+
+# --- a long array of moduli: those near 1 are gathered and written back -------------------
+
+def test_moduli_near_one_in_a_long_array_keep_their_values():
+    # An array of moduli longer than one piece (2**14) has those above 0.998 (kc below 1/16,
+    # the double-double recurrence, and k > 1) done apart and written back into place. Both
+    # sides of 0.998 in one array: each element must be its own call's bits and within 8 ulp
+    # of mpmath at 50 digits (_mp_jacobi, through DLMF 22.17 above 1), the bound of the rows
+    # just above k = 1 (test_near_one_from_above_boost_like_rows); measured 5 at worst, at
+    # k = 1 - 2**-40 where cn and dn are small. A value written to the wrong element, or a
+    # stand-in left in place, would be off by far more.
+    rng = np.random.default_rng(2026)
+    n = 2**14 + 300
+    k = rng.uniform(0.0, 1.0, n)
+    u = rng.uniform(-10.0, 10.0, n)
+    near = [0.9979, 0.99805, 0.9981, 0.999, 0.99999, 1 - 2.0**-40, 1.0, 1.00001, 1.0005, 3.0]
+    spots = rng.choice(n, len(near) * 3, replace=False)
+    k[spots] = near * 3
+    s, c, d = ep.jacobi(u, k)
+    a = ep.am(u, k)
+    for i in [*spots, *rng.choice(n, 40, replace=False)]:
+        assert ep.jacobi(float(u[i]), float(k[i])) == (s[i], c[i], d[i]), (u[i], k[i])
+        assert ep.am(float(u[i]), float(k[i])) == a[i], (u[i], k[i])
+        exact = _mp_jacobi(float(u[i]), float(k[i]))
+        for got, ref in zip((s[i], c[i], d[i]), exact, strict=True):
+            assert _ulps(got, ref) <= 8, (u[i], k[i], got, ref)

@@ -145,7 +145,7 @@ def test_an_element_does_not_overflow_for_its_companions():
         assert together[1][i].tobytes() == np.float64(b).tobytes()
 
 
-@pytest.mark.parametrize("n", [2, 4096, 4097])
+@pytest.mark.parametrize("n", [2, 4096, 4097, 8192, 8193])  # one chunk of states, and two
 def test_a_motion_does_not_alias_its_callers_arrays(n):
     # Up to 4096 states a Motion kept views of the caller's arrays: writing into them after
     # solve changed m.theta0 and m.theta(1.0) (not the regimes). Reference: the same states

@@ -7,6 +7,8 @@ mpmath, in a private context, for the rare states beyond the double-double range
 Modules, from the bottom up (the design note of the reference site gives the invariants):
 
 * :mod:`.dd` -- double-double arithmetic (error-free sums and products, sqrt, sin/cos);
+* :mod:`.levels` -- one level of that AGM, on floats and in place on arrays;
+* :mod:`.ends` -- its two ends on arrays, in place: kc from k, and K from M;
 * :mod:`.agm` -- the AGM / descending Landen constants (K in double-double, the levels);
 * :mod:`.landen` -- the Jacobi kernel on them;
 * :mod:`.careful` -- that kernel in double-double arithmetic, for kc below 1/16;

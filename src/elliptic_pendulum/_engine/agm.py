@@ -17,10 +17,12 @@ from typing import Any, NamedTuple
 import numpy as np
 
 from . import dd as _dd
+from . import ends as _ends
 from .dd import PI_HI as _PI_HI
 from .dd import PI_LO as _PI_LO
+from .dd import SPLIT as _SPLIT
 from .dd import fast_two_sum as _fast_two_sum
-from .dd import two_sum as _two_sum
+from .levels import root, root_into, step, step_into
 
 __all__ = ["CHUNK", "SCALARS", "Constants", "complement", "constants", "constants_float",
            "pad", "quarter_period"]
@@ -90,13 +92,54 @@ def pad(levels: tuple, n: int) -> tuple:
     return tuple(levels) + (levels[-1],) * (n - len(levels))
 
 
+def _mean(diff, s, ch, cl):
+    """M = c (1 - r^2/4), r = (a - b)/(a + b), where a - b <= 1e-8 a (see _NEAR)."""
+    r = diff / s
+    lo = cl - ch * (0.25 * r * r)
+    mh = ch + lo
+    return mh, lo - (mh - ch)
+
+
+def _last(ph, pl, mh, ml, drift):
+    """Return the last level a_N = kc / (M rho_1 ... rho_(N-1)) on the rounded ratios.
+
+    The exact ratios telescope: b_n / a_n = b_n^2 / b_(n+1)^2 (as b_(n+1)^2 = a_n b_n), so
+    rho_1 ... rho_(N-1) = b_1^2 / (a_(N-1) b_(N-1)) = (kc + kc_lo) / p with p the product of
+    the stopping level; the rounded ratios are that times (1 + sum of their deltas). So
+    a_N = (p / M) (1 - kc_lo/kc - sum delta) (the square of the deltas is below 1e-32):
+    ``drift`` is kc_lo/kc + sum delta. p / M as a double-double (ph - fl(q mh) is exact).
+    """
+    q = ph / mh
+    t = _SPLIT * q
+    q1 = t - (t - q)
+    q2 = q - q1
+    t = _SPLIT * mh
+    m1 = t - (t - mh)
+    m2 = mh - m1
+    t = q * mh
+    ql = (((ph - t) - (((q1 * m1 - t) + q1 * m2 + q2 * m1) + q2 * m2)) + (pl - q * ml)) / mh
+    return q + (ql - q * drift)
+
+
+def _quarters(mh, ml):
+    """K = pi / (2 M) as a double-double, split in three parts (Cody and Waite), on floats.
+
+    Arrays take :func:`.ends.quarter_parts`, the same operations in place.
+    """
+    kh, kl = _dd.div(0.5 * _PI_HI + 0.0 * mh, 0.5 * _PI_LO + 0.0 * mh, mh, ml)
+    k_hi = _chop(kh)
+    k_mid = _chop(kh - k_hi + kl)
+    k_lo = (kh - k_hi - k_mid) + kl
+    return kh + kl, k_hi, k_mid, k_lo
+
+
 def _piece(kc: Any, kc_lo: Any) -> Constants:
     """Compute :func:`_constants` of one piece: one double-double AGM serves K and `core`.
 
-    The AGM M(1, kc + kc_lo) runs in double-double arithmetic, seeded with kc (never with
-    1 - k**2), for K = pi / (2 M) to about 1e-32 relative; its levels give the descending
-    Landen sequence a_n (``mu``, rounded to double) and the ratios b_n / a_n (``rho``, each
-    rounded once from the double-double quotient), and `core` takes d = rho + (1 - rho) s,
+    The AGM M(1, kc + kc_lo) runs in double-double arithmetic (:mod:`.levels`),
+    seeded with kc (never with 1 - k**2), for K = pi / (2 M) to about 1e-32 relative; its
+    levels give the descending Landen sequence a_n (``mu``, rounded to double) and the
+    ratios b_n / a_n (``rho``, each rounded once), and `core` takes d = rho + (1 - rho) s,
     a sum of two positive terms, where GSL has (r + b_n) / (r + a_n) (measured: cn and dn
     just above k = 1 from 14 ulp to 8). The recurrence starts from the last level as if it
     were circular, which is off by that level's k_n^2 ~ 4 (a_n - b_n) / (a_n + b_n): an
@@ -104,99 +147,113 @@ def _piece(kc: Any, kc_lo: Any) -> Constants:
     2.5e-17), is made circular, rho = 1; so are all levels after it, which makes the extra
     steps of the recurrence exact identities (d = 1). That last a_N, free to within k_N^2,
     is chosen so that the recurrence's slope at v = 0 is one on the rounded levels,
-    M a_N rho_1 ... rho_(N-1) = kc in double-double (else the roundings of the levels add
-    up in sn(u) ~ u: 4.7 ulp at u = 3e-8 on GSL's rows). An element gets the same bits alone
-    or beside a slower modulus (no dependence on the batch).
+    M a_N rho_1 ... rho_(N-1) = kc (:func:`_last`; else the roundings of the levels add
+    up in sn(u) ~ u: 4.7 ulp at u = 3e-8 on GSL's rows).
+
+    Elements that have stopped ride along with the others (their values are kept from
+    the level where they stopped) until at most half of the piece still iterates; then the
+    rest are gathered, so a few slow moduli cost only their own steps. Every element goes
+    through the same operations whatever its companions: the same bits alone or beside a
+    slower modulus (no dependence on the batch), and those of :func:`_constants_float`.
     """
     shape = kc.shape
     top = kc == 0  # the separatrix: K = inf; run the AGM on a harmless stand-in
     kc_lo = np.where(top, 0.0, kc_lo).ravel()
     kc = np.where(top, 1.0, kc).ravel()
     size = kc.size
-    # The elements still iterating, by index (the others have their M): each step works on
-    # those alone, with the same operations as on the whole piece (the same bits).
-    idx = np.arange(size)
-    ah, al = np.ones(size), np.zeros(size)
     bh, bl = _fast_two_sum(kc, kc_lo)
-    mu, rho, stop = [ah], [bh], np.zeros(size)  # stop: the level N of each element
-    mh, ml = np.empty(size), np.empty(size)
-    # rho_1 ... rho_j in double-double (ph, pl), and its value where an element stopped (qh, ql)
-    ph, pl = np.ones(size), np.zeros(size)
-    qh, ql = np.empty(size), np.empty(size)
+    ah, al = np.ones(size), np.zeros(size)
+    a1, a2 = ah, al
+    drift = kc_lo / kc
+    mu, rho = [ah], [bh]
+    stop = np.full(size, 61.0)  # the level N of each element (61: not yet)
+    # What an element keeps from its last level: M, the product p and the drift there.
+    kept = [np.empty(size) for _ in range(5)]
+    idx = None  # the elements still in the arrays, by position (None: all, in order)
+    buffers = [np.empty(size) for _ in range(16)]
+    work = buffers
+    done = np.zeros(size, dtype=bool)  # by position in the arrays, like them
     for level in range(1, 61):  # 12 steps at kc = 1e-300; the cap guards a bug
-        dh, dl = _two_sum(ah, -bh)
-        diff = dh + (dl + (al - bl))  # a - b >= 0
-        sh, sl = _two_sum(ah, bh)
-        ch, cl = _fast_two_sum(0.5 * sh, 0.5 * (sl + al + bl))  # c = (a + b)/2
-        near = diff <= _NEAR * ah
-        r = diff / sh
-        nh, nl = _fast_two_sum(ch, cl - ch * (0.25 * r * r))  # M = c (1 - r^2/4)
-        here = idx[near]
-        mh[here], ml[here], qh[here], ql[here] = nh[near], nl[near], ph[near], pl[near]
-        stop[here] = level
-        a_level = np.empty(size)  # where stopped, the last level: a_N is set below
-        a_level[idx] = ch
-        mu.append(a_level)
-        go = ~near
-        if not np.any(go):
+        diff = np.subtract(ah, bh, out=work[9])  # a - b >= 0 (exact at the top: Sterbenz)
+        np.add(diff, np.subtract(al, bl, out=work[10]), out=diff)
+        s, ch, cl, ph, pl = step_into(ah, al, bh, bl, a1, a2, work)
+        near = diff <= np.multiply(ah, _NEAR, out=work[10])
+        new = near & ~done
+        if np.any(new):
+            where = np.nonzero(new)[0]
+            at = where if idx is None else idx[where]
+            kept[0][at], kept[1][at] = _mean(diff[where], s[where], ch[where], cl[where])
+            for out, x in zip(kept[2:], (ph, pl, drift), strict=True):
+                out[at] = x[where]
+            stop[at] = level
+        done |= near
+        live = ~done
+        count = int(np.count_nonzero(live))
+        if idx is None:
+            mu.append(ch)
+        else:
+            a_level = np.empty(size)
+            a_level[idx] = ch
+            mu.append(a_level)
+        if count == 0:
             rho.append(np.ones(size))
             break
-        if not np.all(go):
-            idx, ah, al, bh, bl, ch, cl, ph, pl = (x[go] for x in (idx, ah, al, bh, bl, ch, cl,
-                                                                   ph, pl))
-        xh, xl = _dd.mul(ah, al, bh, bl)
-        bh, bl = _dd.sqrt(xh, xl, np.sqrt)
+        if 2 * count <= live.size:  # gather the elements still iterating
+            keep = np.nonzero(live)[0]
+            idx = keep if idx is None else idx[keep]
+            ch, cl, drift = ch[keep], cl[keep], drift[keep]
+            ph, pl = ph[keep], pl[keep]
+            work = [x[:count] for x in buffers]
+            done = np.zeros(count, dtype=bool)
+        bh, bl, a1, a2, ratio, delta = root_into(ph, pl, ch, cl, work[10:])
         ah, al = ch, cl
-        ratio = _dd.div(bh, bl, ah, al)[0]
-        ph, pl = _dd.mul_d(ph, pl, ratio)
-        rho_level = np.ones(size)
-        rho_level[idx] = ratio
-        rho.append(rho_level)
+        np.add(drift, delta, out=drift)
+        if idx is None:
+            rho.append(ratio)
+        else:
+            rho_level = np.ones(size)
+            rho_level[idx] = ratio
+            rho.append(rho_level)
     else:
         raise RuntimeError("AGM did not converge")
-    last = _dd.div(kc, 0.0 * kc, *_dd.mul(mh, ml, qh, ql))[0]  # a_N = kc / (M rho_1 ...)
-    mu = [mu[0], *(np.where(stop <= n, last, a) for n, a in enumerate(mu[1:], 1))]
+    mh, ml, ph, pl, drift = kept
+    last = _last(ph, pl, mh, ml, drift)
+    first = int(stop.min(initial=61.0))  # below it no element has stopped: nothing to mend
+    for n in range(first, len(mu)):  # each level array is the piece's own
+        np.copyto(mu[n], last, where=stop <= n)
+        np.copyto(rho[n], 1.0, where=stop <= n)
     mu, rho = [x.reshape(shape) for x in mu], [x.reshape(shape) for x in rho]
     kc, mh, ml = kc.reshape(shape), mh.reshape(shape), ml.reshape(shape)
-    kh, kl = _dd.div(0.5 * _PI_HI + 0.0 * mh, 0.5 * _PI_LO + 0.0 * mh, mh, ml)
-    k_hi = _chop(kh)
-    k_mid = _chop(kh - k_hi + kl)
-    k_lo = (kh - k_hi - k_mid) + kl
-    return Constants(np.where(top, 0.0, kc), np.where(top, np.inf, kh + kl),
-                     np.where(top, np.inf, k_hi), np.where(top, 0.0, k_mid),
-                     np.where(top, 0.0, k_lo), mh, ml, tuple(mu), tuple(rho))
+    quarter, k_hi, k_mid, k_lo = _ends.quarter_parts(mh, ml)
+    if np.any(top):
+        kc, quarter, k_hi = np.where(top, 0.0, kc), np.where(top, np.inf, quarter), \
+            np.where(top, np.inf, k_hi)
+        k_mid, k_lo = np.where(top, 0.0, k_mid), np.where(top, 0.0, k_lo)
+    return Constants(kc, quarter, k_hi, k_mid, k_lo, mh, ml, tuple(mu), tuple(rho))
 
 
 @lru_cache(maxsize=256)
 def _constants_float(kc: float, kc_lo: float) -> Constants:
     """Compute :func:`_constants` of one modulus on Python floats (its twin: the same bits)."""
-    ah, al = 1.0, 0.0
     bh, bl = _fast_two_sum(kc, kc_lo + 0.0 * kc)
+    ah, al, a1, a2 = 1.0, 0.0, 1.0, 0.0
+    drift = kc_lo / kc
     mu, rho = [ah], [bh]
-    ph, pl = 1.0, 0.0
     while True:
-        dh, dl = _two_sum(ah, -bh)
-        diff = dh + (dl + (al - bl))
-        sh, sl = _two_sum(ah, bh)
-        ch, cl = _fast_two_sum(0.5 * sh, 0.5 * (sl + al + bl))
+        diff = (ah - bh) + (al - bl)
+        s, ch, cl, ph, pl = step(ah, al, bh, bl, a1, a2)
         if diff <= _NEAR * ah:
-            r = diff / sh
-            mh, ml = _fast_two_sum(ch, cl - ch * (0.25 * r * r))
-            mu.append(_dd.div(kc, 0.0 * kc, *_dd.mul(mh, ml, ph, pl))[0])
+            mh, ml = _mean(diff, s, ch, cl)
+            mu.append(_last(ph, pl, mh, ml, drift))
             rho.append(1.0)
             break
-        xh, xl = _dd.mul(ah, al, bh, bl)
-        bh, bl = _dd.sqrt(xh, xl, math.sqrt)
+        bh, bl, a1, a2, ratio, delta = root(ph, pl, ch, cl, math.sqrt)
         ah, al = ch, cl
-        ratio = _dd.div(bh, bl, ah, al)[0]
-        ph, pl = _dd.mul_d(ph, pl, ratio)
+        drift = drift + delta
         mu.append(ah)
         rho.append(ratio)
-    kh, kl = _dd.div(0.5 * _PI_HI + 0.0 * mh, 0.5 * _PI_LO + 0.0 * mh, mh, ml)
-    k_hi = _dd.split(kh)[0]
-    k_mid = _dd.split(kh - k_hi + kl)[0]
-    k_lo = (kh - k_hi - k_mid) + kl
-    return Constants(kc, kh + kl, k_hi, k_mid, k_lo, mh, ml, tuple(mu), tuple(rho))
+    quarter, k_hi, k_mid, k_lo = _quarters(mh, ml)
+    return Constants(kc, quarter, k_hi, k_mid, k_lo, mh, ml, tuple(mu), tuple(rho))
 
 
 @lru_cache(maxsize=256)
@@ -225,13 +282,7 @@ def complement(k: Any) -> tuple[Any, Any]:
     every period of u: sn(1e4, k) would lose three digits. With the low part
     the AGM is seeded with kc to about 1e-32.
     """
-    k = np.asarray(k, dtype=float)
-    a, a_lo = _two_sum(1.0, -k)
-    b, b_lo = _two_sum(1.0, k)
-    p, p_lo = _dd.mul(a, a_lo, b, b_lo)
-    with np.errstate(divide="ignore", invalid="ignore"):  # k = 1: kc = 0 exactly
-        hi, lo = _dd.sqrt(p, p_lo, np.sqrt)
-    return np.where(p == 0, 0.0, hi), np.where(p == 0, 0.0, lo)
+    return _ends.complement(np.asarray(k, dtype=float))  # the operations of dd, in place
 
 
 def quarter_period(kc: Any, kc_lo: Any = 0.0) -> Any:

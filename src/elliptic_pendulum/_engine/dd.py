@@ -26,7 +26,7 @@ import mpmath
 PI_HI = 3.141592653589793
 PI_LO = 1.2246467991473532e-16
 PI_LO2 = -2.9947698097183397e-33
-_SPLIT = 134217729.0  # 2**27 + 1, Dekker's splitter
+SPLIT = 134217729.0  # 2**27 + 1, Dekker's splitter
 
 
 def two_sum(a, b):
@@ -44,7 +44,7 @@ def fast_two_sum(a, b):
 
 def split(a):
     """Return (hi, lo) = a with hi holding the top 26 bits: hi * hi' is exact."""
-    t = _SPLIT * a
+    t = SPLIT * a
     hi = t - (t - a)
     return hi, a - hi
 

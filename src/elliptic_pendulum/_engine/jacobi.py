@@ -29,6 +29,9 @@ __all__ = ["values", "values_of_moduli"]
 # Many moduli are done in pieces of this many elements, from kc to the result: every
 # temporary of the complement, the AGM and the recurrence then stays in the processor's cache.
 CHUNK = 2 ** 14
+# Above this modulus kc < 1/16 (k > sqrt(1 - 2**-8) = 0.99805) and the double-double
+# recurrence takes over (:data:`.careful.SMALL_KC`), or k > 1 takes the reciprocal modulus.
+_NEAR_ONE = 0.998
 
 
 def _ordinary(u, kc, kc_lo, amplitude, u_lo=0.0):
@@ -106,26 +109,48 @@ def values_of_moduli(u, k, amplitude=False):
 
     Many elements at once go in pieces of CHUNK, each from its complement (one for one
     modulus) to its result (each element's bits are those of one call on the whole array:
-    nothing here looks across elements).
+    nothing here looks across elements). The moduli above ``_NEAR_ONE`` (kc below 1/16,
+    where :mod:`.careful` takes over, and k > 1) are gathered from the whole array and
+    done together: the double-double recurrence then runs once on all of them, not once
+    per piece on a handful (each such call costs the same few hundred NumPy calls).
     """
     shape = np.broadcast_shapes(u.shape, k.shape)
     size = math.prod(shape)
     if size <= CHUNK:
         return values(u, k, *_landen.complement(np.minimum(k, 1.0)), amplitude)
     flat_u = np.broadcast_to(u, shape).ravel()
-    one = k.ndim == 0  # one modulus: its kc once, and u in pieces
-    flat_k = k if one else np.broadcast_to(k, shape).ravel()
+    count = 4 if amplitude else 3
+    if k.ndim == 0:  # one modulus: its kc once, and u in pieces
+        outs = _pieces(flat_u, k, amplitude)
+    else:
+        flat_k = np.broadcast_to(k, shape).ravel()
+        near = flat_k > _NEAR_ONE
+        if np.any(near):
+            where = np.nonzero(near)[0]
+            # A harmless stand-in in the pieces; the real values are written below.
+            outs = _pieces(np.where(near, 0.0, flat_u), np.where(near, 0.5, flat_k), amplitude)
+            got = _pieces(flat_u[where], flat_k[where], amplitude)
+            for out, x in zip(outs, got, strict=True):
+                out[where] = x
+        else:
+            outs = _pieces(flat_u, flat_k, amplitude)
+    result = [out.reshape(shape) for out in outs[:count]]
+    return result[0], result[1], result[2], result[3] if amplitude else None
+
+
+def _pieces(flat_u, k, amplitude):
+    """:func:`values` of flat u and k (or one modulus k) in pieces of CHUNK, as new arrays."""
+    one = k.ndim == 0
     pair = _landen.complement(np.minimum(k, 1.0)) if one else None
-    outs = [np.empty(size) for _ in range(4 if amplitude else 3)]
-    for i in range(0, size, CHUNK):
+    outs = [np.empty(flat_u.size) for _ in range(4 if amplitude else 3)]
+    for i in range(0, flat_u.size, CHUNK):
         piece = slice(i, i + CHUNK)
-        kk = flat_k if one else flat_k[piece]
+        kk = k if one else k[piece]
         kc = pair if pair is not None else _landen.complement(np.minimum(kk, 1.0))
         got = values(flat_u[piece], kk, *kc, amplitude)
         for out, x in zip(outs, got, strict=False):
             out[piece] = x
-    result = [out.reshape(shape) for out in outs]
-    return result[0], result[1], result[2], result[3] if amplitude else None
+    return outs
 
 
 def _values(u, k, kc, kc_lo, amplitude):

@@ -25,6 +25,8 @@ the complementary modulus kc carries information:
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from . import careful as _careful
@@ -98,16 +100,30 @@ def core(v, c: Constants, v_lo=None):
     else:
         t = phase_tangent(v, v_lo, c.scale, c.scale_lo, np.tan)
     mu, rho = c.mu, c.rho
-    cc = mu[-1] * t
-    d = 1.0
+    cc = np.multiply(mu[-1], t, out=np.empty(np.broadcast_shapes(np.shape(mu[-1]), np.shape(t))))
+    # d = rho + (1 - rho) (r / (r + a_n)) for (r + b_n) / (r + a_n), in place (see below);
+    # the first step's cc = d cc with d = 1 is an identity, left out.
+    d: Any = 1.0
+    r, x = np.empty(cc.shape), np.empty(cc.shape)
     for n in range(len(mu) - 2, -1, -1):
-        r = cc * cc / mu[n + 1]
-        cc = d * cc
-        d = rho[n] + (1.0 - rho[n]) * (r / (r + mu[n]))  # (r + b_n) / (r + a_n)
-    # Here cc = kc * sc(v) and d = kc / dn(v) (GSL's first branch).
-    dn = c.kc / d
-    cn = dn / np.hypot(1.0, cc)
-    sn = cn * cc / c.kc
+        np.multiply(cc, cc, out=r)
+        np.divide(r, mu[n + 1], out=r)
+        if n < len(mu) - 2:
+            np.multiply(d, cc, out=cc)
+        else:
+            d = np.empty(cc.shape)
+        np.add(r, mu[n], out=x)
+        np.divide(r, x, out=r)
+        np.subtract(1.0, rho[n], out=x)
+        np.multiply(x, r, out=x)
+        np.add(rho[n], x, out=d)
+    # Here cc = kc * sc(v) and d = kc / dn(v) (GSL's first branch). The operations are
+    # those of the expressions, in their order; written into arrays made once, as a
+    # piece's temporaries (2**14 doubles or more) would each be mapped afresh by glibc.
+    dn = np.divide(c.kc, d)
+    cn = np.divide(dn, np.hypot(1.0, cc, out=x))
+    sn = np.multiply(cn, cc, out=r)
+    np.divide(sn, c.kc, out=sn)
     tiny = c.kc < _TINY_KC
     if np.any(tiny):
         sech_v = sech(v)

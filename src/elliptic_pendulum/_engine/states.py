@@ -21,7 +21,9 @@ from .codes import LIBRATION, REST, ROTATION, SEPARATRIX
 
 __all__ = ["solve"]
 
-CHUNK = 4096
+# 2**13 states: their temporaries (64 KiB) stay below the 128 KiB at which glibc maps fresh
+# pages for each allocation; measured, a tenth faster than 4096 on the benchmark ensemble.
+CHUNK = 8192
 
 
 def _reject(bad: np.ndarray, message: str) -> None:
