@@ -113,7 +113,12 @@ class Browser:
                 f"--user-data-dir={profile}",
                 "about:blank",
             ],
-            pass_fds=(3, 4),
+            # Not pass_fds=(3, 4): Python marks those inheritable in the child before
+            # preexec_fn runs, which fails (EBADF) when 3 or 4 is closed in this process at
+            # the fork (another thread's browser had just closed its own pipe there). The
+            # child's dup2 makes 3 and 4 inheritable by itself, and every other descriptor
+            # this process opened is non-inheritable (PEP 446): close_fds is not needed.
+            close_fds=False,
             preexec_fn=wire,
             stdout=subprocess.DEVNULL,
             stderr=subprocess.DEVNULL,
