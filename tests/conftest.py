@@ -66,6 +66,28 @@ def pytest_terminal_summary(terminalreporter: pytest.TerminalReporter) -> None:
                 terminalreporter.write_line(line)
 
 
+_BUILD_TIER = Path(__file__).resolve().parent / "book"
+
+
+def _in_build_tier(item: pytest.Item) -> bool:
+    return _BUILD_TIER in Path(str(item.path)).resolve().parents
+
+
+def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
+    """The build tier's tests last (in their order): the others run first, while the README's
+    commands build the book in the background (``_builds_start_first``), on the core that
+    sphinx and one notebook kernel leave idle."""
+    items.sort(key=_in_build_tier)
+
+
+@pytest.fixture(scope="session", autouse=True)
+def _builds_start_first(request: pytest.FixtureRequest) -> None:
+    """Start the README's commands with the session's first test when the build tier is
+    selected, rather than with the build tier's first test."""
+    if any(_in_build_tier(item) for item in request.session.items):
+        request.getfixturevalue("readme_runs")
+
+
 @pytest.fixture(scope="session")
 def readme_runs(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Runs]:
     """The README's commands, run in its order on a fresh copy, one after the other in the
