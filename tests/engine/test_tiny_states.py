@@ -101,7 +101,10 @@ def test_a_tiny_swing_matches_mpmath(theta0, dtheta0, omega0):
 def test_tiny_swings_in_a_batch_keep_their_bits():
     # One array call on all the states above and a few ordinary ones, each at its own times:
     # each element has the bits of the same state alone (0-d arrays, and Python floats).
-    states = [p.values for p in STATES] + [(0.5, 0.1, 1.0), (2.0, 3.0, 1.0), (math.pi, 0.0, 1.0)]
+    # Ordinary companions, and far ones that the lifting by 2**600 must not overflow.
+    states = [p.values for p in STATES] + [(0.5, 0.1, 1.0), (2.0, 3.0, 1.0), (math.pi, 0.0, 1.0),
+                                           (6.605619048531127e+137, 2.0272093537308443e+52,
+                                            3.6654390894655275e+125), (1e-300, 1e150, 1.0)]
     th0, v0, w0 = (np.array(column)[:, None] for column in zip(*states, strict=True))
     t = np.array([[0.0, -1.0, 0.3, 2.5]]) / np.maximum(w0, 2 * np.abs(v0) + w0)
     t = np.clip(t, -1e289, 1e289)  # the documented limit of t

@@ -158,8 +158,11 @@ def _lifted(k, s, w, theta0, turns):
     or Python floats: the scalar twin calls it too).
     """
     tiny = k < _SMALL_K
-    s_l = np.where(tiny, np.where(turns == 0, theta0 * (0.5 * _LIFT), s * _LIFT), s)
-    return s_l, np.where(tiny, w * _LIFT, w), np.where(tiny, 1.0 / _LIFT, 1.0)
+    # Only the tiny swings are lifted: a far angle or a large w beside them in a batch would
+    # overflow (and signal, under np.errstate(all="raise")), so the others lift a zero.
+    th = np.where(tiny & (turns == 0), theta0, 0.0)
+    s_l = np.where(tiny, np.where(turns == 0, th * (0.5 * _LIFT), s * _LIFT), s)
+    return s_l, np.where(tiny, np.where(tiny, w, 0.0) * _LIFT, w), np.where(tiny, 1.0 / _LIFT, 1.0)
 
 
 def _libration(p: Params, sn, cn, dn, want_theta: bool, want_dtheta: bool):
