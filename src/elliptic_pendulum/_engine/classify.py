@@ -65,6 +65,10 @@ _TWO_PI = (2 * _dd.PI_HI, 2 * _dd.PI_LO, 2 * _dd.PI_LO2)
 _TWO_PI_HI = _dd.split(_TWO_PI[0])  # 26-bit pieces: m * piece is exact for |m| < 2**26
 _NEAR = 2.0 ** 20                   # |theta0| below this reduces here; beyond, _farstates
 _HUGE, _TINY = 2.0 ** 300, 2.0 ** -300
+# Below this modulus (only far states: a tiny swing) k^2 and s^2 underflow, so the test for
+# the branch in phases() is made on s and k times _LIFT (exact): k * _LIFT >= 2**-474, and
+# s, k < 2**-500 keep the squares below 2**200.
+_SMALL_K, _LIFT = 2.0 ** -500, 2.0 ** 600
 
 
 def _take(table, j):
@@ -259,8 +263,13 @@ def phases(st: State, quarter: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     sgn_w = np.where(w < 0, -1.0, 1.0)
     with np.errstate(all="ignore"):  # the branch not taken may divide by zero; np.where drops it
         # |sn| < sn(K/2) = 1/sqrt(1 + kc): nearer the bottom than the turn (strictly, so that
-        # a state at the turn itself, where 1 + kc may round to 1, is counted there).
-        bottom = np.where(lib, s * s * (1.0 + kc) < k * k, s * s * (1.0 + kc) < 1.0)
+        # a state at the turn itself, where 1 + kc may round to 1, is counted there). For a
+        # tiny swing s^2 and k^2 underflow to 0 < 0, which sent every one of them to the turn
+        # (where the phase K - g cancels to an absolute 1e-16, and theta near 0 after it):
+        # there s and k are lifted by 2**600 first, an exact scaling (elsewhere by 1).
+        lift = np.where(k < _SMALL_K, _LIFT, 1.0)
+        sl, kl = s * lift, k * lift
+        bottom = np.where(lib, sl * sl * (1.0 + kc) < kl * kl, s * s * (1.0 + kc) < 1.0)
         aw = np.abs(w)
         # One R_F per state, with the arguments of its branch:
         # II near the bottom: F(asin(s/k)) = (s/k) R_F((w/k)^2, c^2), from the upswing
@@ -299,7 +308,8 @@ def phase_float(s, c, w, k, kc, rot):
     sgn_w = -1.0 if w < 0 else 1.0
     aw = abs(w)
     if not rot:
-        if s * s * (1.0 + kc) < k * k:
+        lift = _LIFT if k < _SMALL_K else 1.0  # as in phases: a tiny swing's squares underflow
+        if (s * lift) * (s * lift) * (1.0 + kc) < (k * lift) * (k * lift):
             x, y = w / k, c * c
             f = (s / k) * _rf_float(x * x, y)
             return (0.0, f) if w >= 0 else (2.0 * sgn_s, -f)

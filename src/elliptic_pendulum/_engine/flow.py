@@ -25,6 +25,8 @@ __all__ = ["Params", "evaluate", "CHUNK"]
 CHUNK = 2 ** 15
 # Below this d0 = dn(u0) (IV), the addition theorem is rescaled (see _rotation).
 _DEEP = 2.0 ** -300
+# Below this modulus (II), theta' is formed from s and w lifted by _LIFT (see _lifted).
+_SMALL_K, _LIFT = 2.0 ** -500, 2.0 ** 600
 
 
 class Params(NamedTuple):
@@ -143,6 +145,26 @@ def _alone(p: Params, keep, s: float, c: float, w: float) -> Params:
                       sigma=np.where(keep, p.sigma, 1.0))
 
 
+def _lifted(k, s, w, theta0, turns):
+    """Return (s, w, back) for theta' = 2 w0 (w cn - s c sn dn) / (c^2 + s^2 cn^2) * back.
+
+    A swing with k < 2**-500 is linear to a relative k^2 / 4 < 2**-1000, and its s may be a
+    subnormal double that has lost bits (half of an odd subnormal theta0 rounds): theta' =
+    2 w0 (w cn - s sn) would carry that loss, multiplied by a large omega0, into a normal
+    result (31780 ulp). There s = sin(theta0/2) = theta0/2 is taken from the exact theta0
+    (the bottom 2 pi m of an even multiple has s = 0 exactly), s and w are lifted into the
+    normal range by 2**600 (exact) and theta' is scaled back by 2**-600 (rounded once).
+    Elsewhere s, w and back are the same values times 1: the same bits. Elementwise (arrays
+    or Python floats: the scalar twin calls it too).
+    """
+    tiny = k < _SMALL_K
+    # Only the tiny swings are lifted: a far angle or a large w beside them in a batch would
+    # overflow (and signal, under np.errstate(all="raise")), so the others lift a zero.
+    th = np.where(tiny & (turns == 0), theta0, 0.0)
+    s_l = np.where(tiny, np.where(turns == 0, th * (0.5 * _LIFT), s * _LIFT), s)
+    return s_l, np.where(tiny, np.where(tiny, w, 0.0) * _LIFT, w), np.where(tiny, 1.0 / _LIFT, 1.0)
+
+
 def _libration(p: Params, sn, cn, dn, want_theta: bool, want_dtheta: bool):
     """(25) at u0 + tau, with sn u0 = s/alpha, cn u0 = w/alpha, dn u0 = c (DLMF 22.8.1-3).
 
@@ -157,7 +179,11 @@ def _libration(p: Params, sn, cn, dn, want_theta: bool, want_dtheta: bool):
         # alpha sn(u) and dn(u) times the denominator; and the size of the terms of the first
         yx = (first + second, c * dn - s * w * sn * cn, np.abs(first) + np.abs(second))
     if want_dtheta:                        # theta' = 2 w0 alpha cn(u)
-        dtheta = 2.0 * p.omega0 * (w * cn - s * c * sn * dn) / (c * c + s * s * cn * cn)
+        tiny = np.any(p.k < _SMALL_K)  # (only then the lifting, which elsewhere changes nothing)
+        s_l, w_l, back = _lifted(p.k, s, w, p.theta0, p.turns) if tiny else (s, w, 1.0)
+        dtheta = 2.0 * p.omega0 * (w_l * cn - s_l * c * sn * dn) / (c * c + s * s * cn * cn)
+        if tiny:
+            dtheta = dtheta * back
     return yx, dtheta
 
 
@@ -370,7 +396,12 @@ def state_float(p, t: float, want_theta: bool = True, want_dtheta: bool = True):
             theta = p.turns + 2.0 * _landen._f(np.arctan2, y, x)
             redo = abs(y) < (abs(first) + abs(second)) * (1.0 / 64.0)
         if want_dtheta:
-            dtheta = 2.0 * p.omega0 * (w * cn - s * cs * sn * dn) / (cs * cs + s * s * cn * cn)
+            if k < _SMALL_K:  # a tiny swing: lifted as in _libration (see _lifted)
+                s_l, w_l, back = (float(x) for x in _lifted(k, s, w, p.theta0, p.turns))
+            else:
+                s_l, w_l, back = s, w, 1.0
+            dtheta = (2.0 * p.omega0 * (w_l * cn - s_l * cs * sn * dn)
+                      / (cs * cs + s * s * cn * cn)) * back
     if want_theta and redo:
         u, u_lo = _two_sum(a, p.rem)
         u_lo = u_lo + (a_lo + p.rate_lo * t)
