@@ -209,3 +209,60 @@ def test_the_font_comes_from_matplotlib_fontja_else_debian_else_a_clear_error(
             _words.japanese_font()
     finally:
         _words.japanese_font.cache_clear()
+
+
+# A figure drawn by hand, as a book's cell draws it: its words from a caller's catalog (the
+# book's, ELLIPTIC_PENDULUM_MESSAGES) or the package's own, a legend, an annotation.
+HAND_CATALOG = """msgid ""
+msgstr ""
+"Language: ja\\n"
+
+msgid "time $t$ (s)"
+msgstr "時刻 $t$（s）"
+
+msgid "the exact motion"
+msgstr "厳密な運動"
+
+msgid "first turning point"
+msgstr "最初の折り返し点"
+"""
+
+
+def _by_hand(language):
+    fig, ax = plt.subplots(figsize=(6, 3))
+    t = np.linspace(0, 6, 50)
+    ax.plot(t, np.sin(t), label="the exact motion")
+    ax.plot(t, np.cos(t), label="a curve no catalog has")
+    ax.set_xlabel("time $t$ (s)")
+    ax.set_ylabel(r"amplitude $\theta_0$ (degrees)")  # the package's own message
+    ax.annotate("first turning point", (np.pi / 2, 1))
+    ax.legend()
+    epp.localize(fig, language=language)
+    return ax
+
+
+def test_localize_translates_a_hand_drawn_figure_in_a_japanese_font(
+        monkeypatch, tmp_path) -> None:
+    catalog = tmp_path / "cells.po"
+    catalog.write_text(HAND_CATALOG, encoding="utf-8")
+    monkeypatch.setenv(_i18n.CATALOG_VARIABLE, str(catalog))
+    rc = {k: repr(v) for k, v in matplotlib.rcParams.items()}
+    png_en, texts_en, complaints_en = _draw(_by_hand, "en")
+    png_ja, texts_ja, complaints_ja = _draw(_by_hand, "ja")
+    # The expectation is the catalog above and plotting/_ja.py, entry by entry.
+    for english, japanese in (("time $t$ (s)", "時刻 $t$（s）"),
+                              ("the exact motion", "厳密な運動"),
+                              ("first turning point", "最初の折り返し点"),
+                              (r"amplitude $\theta_0$ (degrees)", r"振幅 $\theta_0$（度）")):
+        assert english in texts_en and english not in texts_ja
+        assert japanese in texts_ja and japanese not in texts_en
+    # A text no catalog has stays as drawn; every glyph is found, and the English figure is
+    # untouched (the same texts, no complaint).
+    assert "a curve no catalog has" in texts_ja
+    assert complaints_ja == [] == complaints_en and png_ja != png_en
+    assert {k: repr(v) for k, v in matplotlib.rcParams.items()} == rc
+    monkeypatch.setenv("LANGUAGE", "ja")
+    assert _draw(_by_hand, None)[1] == texts_ja
+    with pytest.raises(TypeError, match="figure must be a matplotlib Figure"):
+        epp.localize(plt.subplots()[1])
+    plt.close("all")

@@ -13,7 +13,8 @@ this package: the pendulum and its phase plane (:mod:`.phase`), the elliptic fun
 Lemma 2's extensions (:mod:`.functions`), the period and its harmonics (:mod:`.harmonics`),
 the forces of rod and string (:mod:`.forces`), the driven pendulum (:mod:`.response`), the
 potential well above the phase portrait (:mod:`.well`), and the animation
-(:mod:`.animation`). The names of earlier releases (``phase_portrait``, ``tension_plot``, ...)
+(:mod:`.animation`); :func:`.language.localize` puts a figure a notebook drew itself in the
+reader's language. The names of earlier releases (``phase_portrait``, ``tension_plot``, ...)
 stay as aliases of the same functions.
 
 >>> import elliptic_pendulum.plotting as epp
@@ -45,6 +46,7 @@ from .harmonics import (
     plot_harmonics,
     plot_period_ratio,
 )
+from .language import localize
 from .phase import (
     pendulum_sketch,
     phase_portrait,
@@ -79,4 +81,6 @@ __all__ = [
     "pendulum_sketch", "phase_portrait", "period_ratio_plot", "tension_plot", "extension_plot",
     "approximation_error_plot", "harmonics_plot", "string_flight_plot", "string_phase_plane",
     "backbone_plot", "response_plot", "sweep_plot",
+    # a figure drawn by hand, in the reader's language
+    "localize",
 ]
