@@ -108,6 +108,22 @@ def test_the_po_reader_leaves_out_fuzzy_empty_and_obsolete_entries() -> None:
 
 # --- a Motion's table ---------------------------------------------------------------------
 
+def test_a_field_meets_japanese_with_a_space_as_the_book_writes() -> None:
+    # The book's Japanese sets a space between kana or kanji and Latin letters, digits or
+    # math ("1e-9 以内", "20 回"); a template's field brings either, so the space is set at
+    # the seam, and never doubled or put inside the field or between two Japanese letters.
+    say = _i18n.Say("ja", {"{n} swings over {over}": "{n}回の振動、{over}にわたって",
+                           "rejected: {label}": "変異式（{label}）は退けられる {x:.0e}"})
+    assert say("{n} swings over {over}", n=20, over="mpmath.qfrom") == (
+        "20 回の振動、mpmath.qfrom にわたって")
+    assert say("{n} swings over {over}", n=20, over="振幅") == "20 回の振動、振幅にわたって"
+    assert say("rejected: {label}", label="$8/\\pi$", x=1e-9) == (
+        "変異式（$8/\\pi$）は退けられる 1e-09")
+    # English (and a language without such seams) is str.format, exactly.
+    english = _i18n.Say("en", {})
+    assert english("{n} swings over {over}", n=20, over="x") == "20 swings over x"
+
+
 def test_every_word_of_a_motions_table_has_japanese_and_no_other() -> None:
     # The English is motion.py's (its say(...) calls) and the regimes' names.
     english = say_literals(SRC / "motion.py") | {r.name.lower() for r in Regime}

@@ -31,6 +31,7 @@ import gettext
 import importlib
 import os
 import re
+import string
 from collections.abc import Callable, Collection, Iterable, Mapping
 from dataclasses import dataclass
 from functools import cache, lru_cache
@@ -48,6 +49,11 @@ LANGUAGES = ("en", "ja")
 CATALOG_VARIABLE = "ELLIPTIC_PENDULUM_MESSAGES"
 # How a language joins two sentences of one paragraph: Japanese runs them on.
 _SENTENCE_GAP = {"ja": ""}
+# Japanese sets a space between its own letters and Latin letters, digits or math ("1e-9
+# 以内", "振幅 $A$"); a template cannot know what a field brings, so the space is set where
+# a field meets the template's text.
+_JAPANESE_LETTER = re.compile(r"[\u3040-\u30ff\u4e00-\u9fff]")
+_LATIN_EDGE = re.compile(r"[A-Za-z0-9$()|]")
 
 
 def _code(entry: str) -> str:
@@ -230,11 +236,39 @@ class Say:
         if self.language != "en" and english:
             found = self.extra(english)
             text = found if found is not None else self.messages.get(english, english)
-        return text.format(**fields) if fields else text
+        if not fields:
+            return text
+        if self.language != "ja":
+            return text.format(**fields)
+        return _spaced(text, fields)
 
     def sentences(self, parts: Iterable[str]) -> str:
         """Join sentences as the language does (a space in English, none in Japanese)."""
         return _SENTENCE_GAP.get(self.language, " ").join(parts)
+
+
+def _spaced(template: str, fields: Mapping[str, Any]) -> str:
+    """Fill a Japanese template, spacing a field from the kana and kanji around it.
+
+    A space is set where a field's Latin edge meets a kana or kanji of the template or of
+    another field, and none where there is a space already.
+    """
+    pieces: list[tuple[bool, str]] = []  # (a field's value?, text)
+    for literal, name, spec, conversion in string.Formatter().parse(template):
+        if literal:
+            pieces.append((False, literal))
+        if name is not None:
+            field = "{" + name + (f"!{conversion}" if conversion else "") + (
+                f":{spec}" if spec else "") + "}"
+            pieces.append((True, field.format(**fields)))
+    out = ""
+    for i, (is_field, text) in enumerate(pieces):
+        if out and text and (is_field or pieces[i - 1][0]) and (
+                _JAPANESE_LETTER.match(out[-1]) and _LATIN_EDGE.match(text[0])
+                or _LATIN_EDGE.match(out[-1]) and _JAPANESE_LETTER.match(text[0])):
+            out += " "
+        out += text
+    return out
 
 
 def say_for(package: str, language: str | None) -> Say:
