@@ -25,6 +25,7 @@ import pytest
 
 from elliptic_pendulum import selfcheck
 from elliptic_pendulum.selfcheck import _core, _ja
+from tests.ja_text import GETTEXT_ENVIRONMENTS
 
 VALUES = [(label, value) for label, ex in sorted(selfcheck.EXERCISES.items())
           for value in ex.values]
@@ -301,19 +302,9 @@ def test_an_unknown_language_is_a_clear_error() -> None:
         _core.judge(value, 1.0, 1.0, language="../en")
 
 
-@pytest.mark.parametrize(("environ", "language"), [
-    ({}, "en"),
-    ({"LANG": "ja_JP.UTF-8"}, "ja"),
-    ({"LANG": "C"}, "en"),
-    ({"LC_ALL": "ja_JP.eucJP", "LANG": "en_GB.UTF-8"}, "ja"),
-    ({"LC_MESSAGES": "en_US.UTF-8", "LANG": "ja_JP.UTF-8"}, "en"),
-    ({"LANGUAGE": "de:ja", "LANG": "en_US.UTF-8"}, "ja"),
-    ({"LANGUAGE": "de:fr", "LANG": "ja_JP.UTF-8"}, "en"),
-    ({"LANGUAGE": "", "LANG": "ja_JP"}, "ja"),
-])
+@pytest.mark.parametrize(("environ", "language"), GETTEXT_ENVIRONMENTS)
 def test_the_environment_names_the_language_as_for_gettext(environ, language) -> None:
-    # gettext.find's order (LANGUAGE, LC_ALL, LC_MESSAGES, LANG; the first that is set
-    # decides, an empty one is skipped), with the languages that have messages here.
+    # The package's rule, with the languages that have self-check messages (Japanese here).
     assert _core.environment_language(environ) == language
 
 
