@@ -1,5 +1,6 @@
 """What the tests of the library's Japanese share: finding English left in a Japanese text,
-and reading the English messages a module writes from its source.
+reading the English messages a module writes from its source, and the environments in which
+gettext names a language.
 
 A module writes a message as ``say("English", ...)``; :func:`say_literals` reads those first
 arguments with the ast module, as xgettext would, so a message added to a module without its
@@ -25,6 +26,20 @@ JAPANESE = re.compile(r"[\u3000-\u30ff\u4e00-\u9fff\uff00-\uffef]")
 _WORD = r"[A-Za-z][A-Za-z0-9'\u2019-]*"
 # Three or more English words in a row, with only spaces and ASCII punctuation between them.
 _RUN = re.compile(rf"{_WORD}(?:[ \t,;:/.()]+{_WORD}){{2,}}")
+# (environment, the language it names) in gettext.find's order: the first of LANGUAGE,
+# LC_ALL, LC_MESSAGES and LANG that is set decides (an empty one is skipped), and its first
+# entry in a language with messages wins; both the package's rule (_i18n) and the
+# self-checks' (selfcheck._core) are held to it, where Japanese has messages.
+GETTEXT_ENVIRONMENTS = [
+    ({}, "en"),
+    ({"LANG": "ja_JP.UTF-8"}, "ja"),
+    ({"LANG": "C"}, "en"),
+    ({"LC_ALL": "ja_JP.eucJP", "LANG": "en_GB.UTF-8"}, "ja"),
+    ({"LC_MESSAGES": "en_US.UTF-8", "LANG": "ja_JP.UTF-8"}, "en"),
+    ({"LANGUAGE": "de:ja", "LANG": "en_US.UTF-8"}, "ja"),
+    ({"LANGUAGE": "de:fr", "LANG": "ja_JP.UTF-8"}, "en"),
+    ({"LANGUAGE": "", "LANG": "ja_JP"}, "ja"),
+]
 
 
 def english_runs(text: str) -> list[str]:

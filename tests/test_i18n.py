@@ -17,7 +17,13 @@ import pytest
 import elliptic_pendulum as ep
 from elliptic_pendulum import _i18n, _ja, motion
 from elliptic_pendulum.regimes import Regime
-from tests.ja_text import JAPANESE, check_translation, english_runs, say_literals
+from tests.ja_text import (
+    GETTEXT_ENVIRONMENTS,
+    JAPANESE,
+    check_translation,
+    english_runs,
+    say_literals,
+)
 
 SRC = Path(motion.__file__).parent
 
@@ -30,16 +36,7 @@ def clean_environment(monkeypatch):
     return monkeypatch
 
 
-@pytest.mark.parametrize(("environ", "language"), [
-    ({}, "en"),
-    ({"LANG": "ja_JP.UTF-8"}, "ja"),
-    ({"LANG": "C"}, "en"),
-    ({"LC_ALL": "ja_JP.eucJP", "LANG": "en_GB.UTF-8"}, "ja"),
-    ({"LC_MESSAGES": "en_US.UTF-8", "LANG": "ja_JP.UTF-8"}, "en"),
-    ({"LANGUAGE": "de:ja", "LANG": "en_US.UTF-8"}, "ja"),
-    ({"LANGUAGE": "de:fr", "LANG": "ja_JP.UTF-8"}, "en"),
-    ({"LANGUAGE": "", "LANG": "ja_JP"}, "ja"),
-])
+@pytest.mark.parametrize(("environ", "language"), GETTEXT_ENVIRONMENTS)
 def test_the_environment_names_the_language_as_for_gettext(environ, language) -> None:
     assert _i18n.environment_language(environ) == language
 

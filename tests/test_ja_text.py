@@ -1,10 +1,14 @@
-"""The checkers of tests/ja_text.py can fail: each is shown the mistake it is there to catch."""
+"""The checkers of tests/ja_text.py can fail: each is shown the mistake it is there to catch;
+and its gettext environments name the language that gettext itself finds in them."""
 
 from __future__ import annotations
 
+import gettext
+from pathlib import Path
+
 import pytest
 
-from tests.ja_text import check_translation, english_runs, say_literals
+from tests.ja_text import GETTEXT_ENVIRONMENTS, check_translation, english_runs, say_literals
 
 
 def test_a_run_of_english_words_is_found_outside_math_and_code_only() -> None:
@@ -32,3 +36,19 @@ def test_say_literals_reads_the_first_argument_of_each_say_call(tmp_path) -> Non
 def test_check_translation_rejects_each_kind_of_mistake(english, japanese) -> None:
     with pytest.raises(AssertionError):
         check_translation(english, japanese)
+
+
+@pytest.mark.parametrize(("environ", "language"), GETTEXT_ENVIRONMENTS)
+def test_each_gettext_environment_names_what_gettext_finds(tmp_path, monkeypatch, environ,
+                                                           language) -> None:
+    # gettext.find is the reference, over a folder with messages in English and Japanese
+    # (it asks only whether the file exists); finding none means English.
+    for code in ("en", "ja"):
+        (tmp_path / code / "LC_MESSAGES").mkdir(parents=True)
+        (tmp_path / code / "LC_MESSAGES" / "x.mo").touch()
+    for variable in ("LANGUAGE", "LC_ALL", "LC_MESSAGES", "LANG"):
+        monkeypatch.delenv(variable, raising=False)
+    for variable, value in environ.items():
+        monkeypatch.setenv(variable, value)
+    found = gettext.find("x", str(tmp_path))
+    assert (Path(found).parts[-3] if found else "en") == language

@@ -1,16 +1,18 @@
-"""The self-checks in Japanese (elliptic_pendulum/selfcheck/_ja.py), and English unchanged.
+"""The self-checks in Japanese (elliptic_pendulum/selfcheck/_ja), and English unchanged.
 
 Asked for Japanese (``language="ja"``, as the Japanese notebooks ask, or an environment whose
 LANGUAGE, LC_ALL, LC_MESSAGES or LANG names it), judge and check must say everything in
 Japanese: the exercises' texts through MESSAGES, the core's sentences through TEMPLATES.
 Otherwise they must say exactly what they said before the package had languages, and not
-even import _ja.py.
+even import _ja.
 """
 
 from __future__ import annotations
 
+import importlib
 import math
 import os
+import pkgutil
 import re
 import string
 import subprocess
@@ -23,6 +25,7 @@ import pytest
 
 from elliptic_pendulum import selfcheck
 from elliptic_pendulum.selfcheck import _core, _ja
+from tests.ja_text import GETTEXT_ENVIRONMENTS
 
 VALUES = [(label, value) for label, ex in sorted(selfcheck.EXERCISES.items())
           for value in ex.values]
@@ -159,11 +162,48 @@ def test_english_check_says_what_it_said_before(capsys, monkeypatch) -> None:
 # --- The Japanese texts ------------------------------------------------------------------
 
 def test_every_text_of_every_exercise_has_japanese_and_no_other() -> None:
-    # The texts come from the registry (the chapter modules); MESSAGES from _ja.py. A text
-    # changed in a chapter module shows up here twice: untranslated, and stale.
+    # The texts come from the registry (the chapter modules); MESSAGES from _ja's tables. A
+    # text changed in a chapter module shows up here twice: untranslated, and stale.
     texts = _texts_of_exercises()
     assert sorted(texts - set(_ja.MESSAGES)) == [], "texts without Japanese"
     assert sorted(set(_ja.MESSAGES) - texts) == [], "Japanese for texts no exercise has"
+
+
+def _texts_by_chapter() -> dict[str, set[str]]:
+    # A chapter's texts: those of the exercises whose reference its module defines (an
+    # exercise with values has one, beside its hints).
+    found: dict[str, set[str]] = {}
+    for exercise in selfcheck.EXERCISES.values():
+        if exercise.reference is not None:
+            chapter = exercise.reference.__module__.rpartition(".")[2]
+            found.setdefault(chapter, set()).update(
+                text for v in exercise.values for text in (v.what, *(h.message for h in v.hints)))
+    return found
+
+
+def test_each_chapters_japanese_is_in_the_table_of_its_name() -> None:
+    # _ja/<chapter>.py beside <chapter>.py, holding texts of that chapter only (a text two
+    # chapters write stands in one of their tables).
+    texts = _texts_by_chapter()
+    tables = {m.name for m in pkgutil.iter_modules(_ja.__path__)}
+    assert tables == set(texts)
+    for chapter in sorted(tables):
+        table = importlib.import_module(f"{_ja.__name__}.{chapter}").MESSAGES
+        assert sorted(set(table) - texts[chapter]) == [], f"not texts of {chapter}.py"
+
+
+def test_a_text_in_two_tables_is_an_error(tmp_path, monkeypatch) -> None:
+    # The two could say it differently, and joining would keep one without a word.
+    for name, japanese in (("one", "一"), ("two", "二")):
+        (tmp_path / f"{name}.py").write_text(f"MESSAGES = {{'a text': {japanese!r}}}\n",
+                                            encoding="utf-8")
+    monkeypatch.setattr(_ja, "__path__", [str(tmp_path)])
+    try:
+        with pytest.raises(ValueError, match="two.py translates a text another table has"):
+            _ja._joined()
+    finally:
+        for name in ("one", "two"):
+            sys.modules.pop(f"{_ja.__name__}.{name}", None)
 
 
 @pytest.mark.parametrize(("english", "japanese"), sorted(_ja.MESSAGES.items()),
@@ -262,19 +302,9 @@ def test_an_unknown_language_is_a_clear_error() -> None:
         _core.judge(value, 1.0, 1.0, language="../en")
 
 
-@pytest.mark.parametrize(("environ", "language"), [
-    ({}, "en"),
-    ({"LANG": "ja_JP.UTF-8"}, "ja"),
-    ({"LANG": "C"}, "en"),
-    ({"LC_ALL": "ja_JP.eucJP", "LANG": "en_GB.UTF-8"}, "ja"),
-    ({"LC_MESSAGES": "en_US.UTF-8", "LANG": "ja_JP.UTF-8"}, "en"),
-    ({"LANGUAGE": "de:ja", "LANG": "en_US.UTF-8"}, "ja"),
-    ({"LANGUAGE": "de:fr", "LANG": "ja_JP.UTF-8"}, "en"),
-    ({"LANGUAGE": "", "LANG": "ja_JP"}, "ja"),
-])
+@pytest.mark.parametrize(("environ", "language"), GETTEXT_ENVIRONMENTS)
 def test_the_environment_names_the_language_as_for_gettext(environ, language) -> None:
-    # gettext.find's order (LANGUAGE, LC_ALL, LC_MESSAGES, LANG; the first that is set
-    # decides, an empty one is skipped), with the languages that have messages here.
+    # The package's rule, with the languages that have self-check messages (Japanese here).
     assert _core.environment_language(environ) == language
 
 
@@ -318,7 +348,7 @@ def test_asked_for_japanese_it_prints_japanese(tmp_path, how, env) -> None:
 
 
 def test_otherwise_it_prints_english_without_the_japanese_module(tmp_path) -> None:
-    # English as before (the reference of _report_before), with _ja.py not imported.
+    # English as before (the reference of _report_before), with _ja not imported.
     v_star = selfcheck.expected("ex-energy-threshold")["v_star"]
     run = _run_check(tmp_path, CHECK.format(v_star=v_star, language=""), LANG="en_US.UTF-8")
     assert run.returncode == 0, run.stderr

@@ -11,8 +11,9 @@ expected mistake it matches: the hint names the mistake, never the value.
 It says so in the language it is asked for (``language="ja"``), else in the one the
 environment names as gettext reads it (the first of LANGUAGE, LC_ALL, LC_MESSAGES and LANG
 that is set; ``ja_JP.UTF-8`` names Japanese), else in English. Nothing global is set: each
-call chooses. English is written here, another language in its own module, ``_ja.py`` for
-Japanese, which translates the exercises' texts and this module's sentences.
+call chooses. English is written here, another language in its own module, ``_ja`` for
+Japanese, which translates this module's sentences and the exercises' texts (a table per
+chapter, ``_ja/<chapter>.py``).
 
 A ``reference`` imports what it needs inside its own body: nbgrader's hidden tests (the
 repository's tools/classroom/nbgrader.py) paste its source into the test cell, where nothing
@@ -201,7 +202,7 @@ def report(label: str, answers: dict[str, Any], *,
     return ok, "\n\n".join(lines)
 
 
-# What judge and check say in English; another language's module (_ja.py for "ja") has the
+# What judge and check say in English; another language's module (_ja for "ja") has the
 # same keys and placeholders, and MESSAGES for the exercises' own texts.
 ENGLISH = {
     "still": "{name} is still `...`: put your answer ({what}) in its place.",
