@@ -194,7 +194,7 @@ def _export(app: Sphinx, exception: BaseException | None) -> None:
     except ValueError as err:  # a page the notebooks cannot hold: say which, and why
         logger.warning(f"classroom notebooks not exported: {err}", type="classroom")
         return
-    if not changed and not _bundles_stale(out, editions):
+    if not changed and not _bundles_stale(out, editions, _language(app)):
         return  # the same notebooks and package as the bundles hold: nothing to make again
     try:
         bundle.bundle_editions(out, editions, language=_language(app))
@@ -204,10 +204,14 @@ def _export(app: Sphinx, exception: BaseException | None) -> None:
     logger.info(f"classroom notebooks ({', '.join(editions)}) in {out}")
 
 
-def _bundles_stale(out: Path, editions: tuple[str, ...]) -> bool:
-    # A zip missing, or older than a file of the package whose wheel it holds.
+def _bundles_stale(out: Path, editions: tuple[str, ...], language: str) -> bool:
+    # A zip missing, or older than a file of the package whose wheel it holds, or than the
+    # catalog of the cells' texts that a translated edition's zip holds.
     package = Path(bundle.ROOT) / "src" / "elliptic_pendulum"
-    newest = max(p.stat().st_mtime for p in package.rglob("*.py"))
+    sources = [*package.rglob("*.py")]
+    if language != "en":
+        sources.append(bundle.catalog_source(language))
+    newest = max(p.stat().st_mtime for p in sources)
     zips = [out / f"{ZIP_NAME}-{edition}.zip" for edition in editions]
     return any(not z.is_file() or z.stat().st_mtime < newest for z in zips)
 

@@ -39,6 +39,14 @@ ZIP_NAME = "elliptic-pendulum-notebooks"
 README = "README.md"
 REQUIREMENTS = "requirements.txt"
 BUNDLE_FILES = (README, REQUIREMENTS)
+# A translated edition's catalog of the texts its cells pass to the library (a fact's
+# sentence, a figure's label), which its notebooks' language cell names (export.py).
+CATALOG = "cells.po"
+
+
+def catalog_source(language: str) -> Path:
+    """The book's catalog of its cells' texts in ``language`` (book/_ext/kernels.py)."""
+    return ROOT / "book" / "locale" / language / "LC_MESSAGES" / CATALOG
 def bundle_name(edition: str) -> str:
     return f"{ZIP_NAME}-{edition}"
 
@@ -337,7 +345,11 @@ def write(folder: Path, edition: str, wheel: Path, language: str = "en") -> list
     (folder / REQUIREMENTS).write_text(requirements(), encoding="utf-8")
     text = readme_ja(edition, notebooks) if language == "ja" else readme(edition, notebooks)
     (folder / README).write_text(text, encoding="utf-8")
-    return [folder / wheel.name, folder / REQUIREMENTS, folder / README]
+    written = [folder / wheel.name, folder / REQUIREMENTS, folder / README]
+    if language != "en":
+        shutil.copy2(catalog_source(language), folder / CATALOG)
+        written.append(folder / CATALOG)
+    return written
 
 
 def zip_edition(folder: Path, edition: str, zip_dir: Path) -> Path:
@@ -348,6 +360,8 @@ def zip_edition(folder: Path, edition: str, zip_dir: Path) -> Path:
     with zipfile.ZipFile(archive, "w", zipfile.ZIP_DEFLATED) as z:
         files = [*sorted(folder.glob("*.ipynb")), *(folder / f for f in BUNDLE_FILES)]
         files.append(folder / wheel_name())
+        if (folder / CATALOG).is_file():
+            files.append(folder / CATALOG)
         for path in files:
             z.write(path, f"{name}/{path.name}")
     return archive

@@ -123,6 +123,22 @@ def first_cell(title: str, page: str, edition: str, answers: bool, w: Words) -> 
     return "\n\n".join(lines)
 
 
+def language_cells(w: Words) -> list[nbformat.NotebookNode]:
+    """The code cell that sets a translated notebook's language, or none in English.
+
+    The library writes its verdicts and figures in the language of the environment, read at
+    each call, and translates the texts a cell passes it from the catalog the environment
+    names (the book's catalog of its cells' texts, shipped beside the notebooks, bundle.py):
+    the book's build sets both for each edition (book/_ext/kernels.py), and this cell does
+    the same in the student's kernel, whatever the machine's locale.
+    """
+    if not w.language_cell:
+        return []
+    cell = nbformat.v4.new_code_cell(w.language_cell.format(catalog=bundle.CATALOG))
+    cell.metadata["classroom"] = {"language": w.language}
+    return [cell]
+
+
 def _what(text: str, language: str) -> str:
     # A result's description, as the self-check names it in the notebook's language.
     if language == "en":
@@ -204,7 +220,7 @@ def notebook(tree: Any, docname: str, edition: str, language: str, files: dict[s
                   ) and edition == "student"
     nb = nbformat.v4.new_notebook()
     nb.cells = [nbformat.v4.new_markdown_cell(first_cell(title, docname, edition, answers, w)),
-                *cells]
+                *language_cells(w), *cells]
     nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",
                                  "language": "python"}
     nb.metadata["language_info"] = {"name": "python"}

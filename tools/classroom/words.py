@@ -55,6 +55,9 @@ class Words:
     check: str = "<details><summary>✔ What the next cell checks</summary>\n\n{note}\n\n</details>"
     answer: str = ("**Your answer** to the parts to prove or explain (double-click to write "
                    "here).")
+    # A translated edition's notebook asks the library for its language in a code cell
+    # under the first (export.py); English is the library's own, and needs none.
+    language_cell: str = ""
 
     def statement(self, kind: str) -> str:
         """The name of a sphinx-proof statement kind ("lemma" -> "Lemma")."""
@@ -114,6 +117,15 @@ JAPANESE = Words(
     hint=("<details><summary><b>ヒント</b>（証明・説明を求める部分）</summary>"
           "\n\n{hint}\n\n</details>"),
     answer="**あなたの答え**（証明・説明を求める部分。ダブルクリックしてここに書く）",
+    language_cell=(
+        "# 検証の判定や図の文字を日本語で書かせる。elliptic_pendulum は書く言語を環境変数\n"
+        "# LANGUAGE から読み、セルが渡す英語の文の訳を、ELLIPTIC_PENDULUM_MESSAGES が指す\n"
+        "# カタログ（このノートブックと同じフォルダの {catalog}）から読む。\n"
+        "import os\n"
+        "\n"
+        "os.environ[\"LANGUAGE\"] = \"ja\"\n"
+        "if os.path.exists(\"{catalog}\"):\n"
+        "    os.environ[\"ELLIPTIC_PENDULUM_MESSAGES\"] = os.path.abspath(\"{catalog}\")"),
 )
 
 WORDS = {"en": ENGLISH, "ja": JAPANESE}
