@@ -3,8 +3,8 @@
 #
 #   make book         the site in book/_build/html: the book, its Japanese edition in ja/ and
 #                     its reference in reference/ (myst-nb cache: unchanged cells are not
-#                     re-run; the editions share it)
-#   make book-ja      the Japanese edition alone, book/_build/html/ja (after the English one)
+#                     re-run; each edition runs its cells in its language, both at once)
+#   make book-ja      the Japanese edition alone, book/_build/html/ja
 #   make site         the one folder to publish, book/_build/html: `make book`, the student
 #                     edition in student/, the four PDFs in pdf/ (the student site's two in
 #                     student/pdf/ as well), the notebook bundles in classroom/; its home
@@ -69,8 +69,8 @@ STUDENT  := $(SITE)/student
 DOCTREES := $(BUILD)/doctrees
 
 # The Japanese edition (book/_ext/i18n.py) is the same pages with book/locale's catalogs, in
-# the site's ja/ folder: it executes nothing (the English build filled the cache) and links
-# the same reference, one folder up.
+# the site's ja/ folder, linking the same reference one folder up. It runs its own cells, in
+# Japanese (book/_ext/kernels.py), with its own execution cache.
 JA := -D language=ja -D reference_site=../reference
 
 # What a build of the book reads: its pages, extensions and catalogs, the reference's pages,
@@ -81,32 +81,45 @@ INPUTS := pyproject.toml $(shell find book docs src tools -type f -not -path '*/
             -not -path '*/__pycache__/*' -not -path '*.egg-info/*' -not -name '*.mo' \
             -not -path '*/.ipynb_checkpoints/*' 2>/dev/null)
 
-$(BUILD)/.book-en: $(INPUTS) | $(STAMP)
+# The two editions execute their pages at once, one core each, once the reference they link
+# exists; make prints each edition's output whole (--output-sync), after it finished.
+$(BUILD)/.reference: $(INPUTS) | $(STAMP)
 	$(SPHINX) -d $(DOCTREES)/reference -b html docs $(SITE)/reference
+	touch $@
+
+$(BUILD)/.book-en: $(BUILD)/.reference
 	$(SPHINX) -d $(DOCTREES)/book -b html book $(SITE)
 	touch $@
 
-$(BUILD)/.book-ja: $(BUILD)/.book-en
+$(BUILD)/.book-ja: $(BUILD)/.reference
 	$(SPHINX) -d $(DOCTREES)/book-ja $(JA) -b html book $(SITE)/ja
 	touch $@
 
-reference book-en: $(BUILD)/.book-en
+reference: $(BUILD)/.reference
+
+book-en: $(BUILD)/.book-en
 
 book-ja: $(BUILD)/.book-ja
 
-book: $(BUILD)/.book-ja
+$(BUILD)/.book: $(BUILD)/.reference
+	$(MAKE) --no-print-directory -j2 --output-sync=target $(BUILD)/.book-en $(BUILD)/.book-ja
+	touch $@
+
+book: $(BUILD)/.book
 
 book-strict: $(STAMP)
 	$(SPHINX) -E -d $(DOCTREES)/reference -b html docs $(SITE)/reference
 	$(SPHINX) -E -d $(DOCTREES)/book -D nb_execution_mode=force -b html book $(SITE)
-	$(SPHINX) -E -d $(DOCTREES)/book-ja $(JA) -b html book $(SITE)/ja
-	touch $(BUILD)/.book-en $(BUILD)/.book-ja
+	$(SPHINX) -E -d $(DOCTREES)/book-ja -D nb_execution_mode=force $(JA) -b html book $(SITE)/ja
+	touch $(BUILD)/.reference $(BUILD)/.book-en $(BUILD)/.book-ja $(BUILD)/.book
 
-# The messages of the current English pages, book/_build/gettext/<page>.pot (on the shared
-# execution cache: figure captions exist only in executed pages).
+# The messages of the current English pages, book/_build/gettext/<page>.pot (on the English
+# execution cache: figure captions exist only in executed pages), and cells.pot, the texts
+# that the pages' code cells pass to the library (tools/i18n/library_texts.py).
 gettext: $(BUILD)/.book-en
 	$(SPHINX) -d $(DOCTREES)/gettext -D reference_site=../html/reference -b gettext \
 	  book $(BUILD)/gettext
+	$(PY) -m tools.i18n.library_texts book $(BUILD)/gettext/cells.pot
 
 i18n-update: gettext
 	$(PY) -m tools.i18n.update $(BUILD)/gettext book/locale ja
@@ -120,7 +133,7 @@ docs: $(STAMP)
 
 # The notebooks that the book's build wrote from its pages (book/_ext/classroom.py), with
 # their bundles: nothing is exported or run again.
-notebooks: $(BUILD)/.book-ja
+notebooks: $(BUILD)/.book-en
 	rm -rf notebooks/student notebooks/instructor notebooks/*.zip
 	mkdir -p notebooks
 	cp -R $(SITE)/classroom/student $(SITE)/classroom/instructor $(SITE)/classroom/*.zip \
@@ -145,7 +158,7 @@ book-student: $(BUILD)/.student
 
 # The course folder for nbgrader (tools/classroom/nbgrader.py): nbgrader_config.py and
 # source/<assignment>/, made from the instructor notebooks that `make book` wrote.
-nbgrader: $(BUILD)/.book-ja
+nbgrader: $(BUILD)/.book-en
 	$(PY) -m tools.classroom.nbgrader $(SITE)/classroom/instructor $(BUILD)/nbgrader
 
 # The whole book as one PDF each for instructors (solutions open) and students (none), in
@@ -154,14 +167,14 @@ nbgrader: $(BUILD)/.book-ja
 # book's and the student site's), so no page is read or executed again, and resolves the
 # library's names in that edition's reference; a PDF cannot link to files beside it, so
 # those names print as text.
-$(BUILD)/pdf/.made: $(BUILD)/.book-ja $(BUILD)/.student
+$(BUILD)/pdf/.made: $(BUILD)/.book $(BUILD)/.student
 	$(PY) -m tools.pdf book $(BUILD)
 	touch $@
 
 pdf: $(BUILD)/pdf/.made
 
 # One folder to publish: the site with the student edition and the PDFs inside it.
-site: $(BUILD)/.book-ja $(BUILD)/.student $(BUILD)/pdf/.made
+site: $(BUILD)/.book $(BUILD)/.student $(BUILD)/pdf/.made
 	mkdir -p $(SITE)/pdf $(STUDENT)/pdf
 	cp $(BUILD)/pdf/*.pdf $(SITE)/pdf/
 	cp $(BUILD)/pdf/book-student.pdf $(BUILD)/pdf/book-student-ja.pdf $(STUDENT)/pdf/

@@ -65,6 +65,21 @@ def test_the_check_finds_each_silent_mistake(mistake: str) -> None:
     assert status.check_entry(MSGID, BROKEN[mistake]) != []
 
 
+def test_the_cells_texts_keep_their_template_fields() -> None:
+    # The library fills a cell's template with str.format after translating it
+    # (checks.verify, values=): a translation without a field, or with a lone brace, fails
+    # when the Japanese edition runs the cell.
+    cells = [(msgid, msgstr) for name, msgid, msgstr in translations() if name == status.CELLS]
+    assert len(cells) > 400
+    assert [(msgid, f) for msgid, msgstr in cells
+            for f in status.check_template(msgid, msgstr)] == []
+    template = "the energy changes by {drift:.0e} over {n} swings"
+    assert status.check_template(template, "{n} 回の振動で、エネルギーは {drift:.0e} 変わる") == []
+    assert status.check_template(template, "{n} 回の振動で、エネルギーは {drift} 変わる") != []
+    assert status.check_template(template, "振動で、エネルギーは {drift:.0e} 変わる") != []
+    assert status.check_template(template, "{n} 回の振動で { エネルギーは {drift:.0e}") != []
+
+
 def test_status_reports_a_message_missing_from_its_catalog(tmp_path: Path) -> None:
     # A current template with one message more than the catalog: what an English change
     # leaves until `make i18n-update` merges it.

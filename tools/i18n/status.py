@@ -11,6 +11,11 @@ messages) with the catalogs (``<locale>/ja/LC_MESSAGES/<page>.po``), and fails u
   same inline formulas and code spans, no blank line (only its first paragraph would be
   kept), closed roles, and no ``**`` emphasis against a CJK bracket (shown as asterisks).
 
+The catalog ``cells`` holds the texts that the pages' code cells pass to the library (a
+fact's sentence, a figure's label: ``tools/i18n/library_texts.py`` writes its template beside
+the pages'); the library fills those that are templates with ``str.format``, so each of its
+translations also keeps the template's fields.
+
 ``--catalogs-only`` runs the second part on the catalogs alone, without templates.
 """
 
@@ -18,6 +23,7 @@ from __future__ import annotations
 
 import argparse
 import re
+import string
 import sys
 from collections import Counter
 from dataclasses import dataclass
@@ -34,6 +40,8 @@ MATH = re.compile(r"(?<![\\$])\$(?!\$)((?:\\.|[^$\\])+)\$")
 CODE = re.compile(r"(?<![`}])``?([^`]+)``?")
 # Roles whose text is prose that is translated; for the others the whole content is kept.
 TEXT_ROLES = {"ref", "numref", "doc", "prf:ref", "term"}
+# The catalog of the cells' texts, whose templates str.format fills.
+CELLS = "cells"
 
 
 @dataclass
@@ -89,6 +97,24 @@ def check_entry(msgid: str, msgstr: str) -> list[str]:
     return faults
 
 
+def _fields(text: str) -> Counter[str] | None:
+    """The fields of a str.format template with their formats, or None if it is malformed."""
+    try:
+        return Counter(f"{name}:{spec}" for _, name, spec, _ in string.Formatter().parse(text)
+                       if name is not None)
+    except ValueError:
+        return None
+
+
+def check_template(msgid: str, msgstr: str) -> list[str]:
+    """What a translation of a cell's text must also keep: its template's fields."""
+    if _fields(msgstr) is None:
+        return ["a lone brace (write {{ or }} for a brace of the text)"]
+    if _fields(msgstr) != _fields(msgid):
+        return [f"template fields differ ({sorted(_fields(msgid) or [])} in the message)"]
+    return []
+
+
 def _read(path: Path):
     with path.open("rb") as f:
         return read_po(f, abort_invalid=True)
@@ -123,6 +149,8 @@ def check(pot_dir: Path | None, locale: Path, language: str) -> tuple[list[Probl
                 problems.append(Problem(name, msgid, "untranslated"))
                 continue
             faults = check_entry(msgid, str(entry.string))
+            if name == CELLS:
+                faults += check_template(msgid, str(entry.string))
             problems.extend(Problem(name, msgid, f) for f in faults)
             done += not faults
         counts[name] = (len(wanted), done)
