@@ -15,6 +15,7 @@ import ast
 import inspect
 import math
 import os
+import re
 from pathlib import Path
 
 import pytest
@@ -28,13 +29,21 @@ CHECKS = Path(verify.__file__).parent
 
 
 def _fragments_of_identities() -> set[str]:
-    # The words a verdict quotes from identities.py: mutant labels and domains with prose.
+    # The words a verdict quotes from identities.py: mutant labels and domains with prose,
+    # and the claims named in words ("§3, after (10)", "Proposition 1.2").
+    def words(node: ast.AST) -> bool:
+        return (isinstance(node, ast.Constant) and isinstance(node.value, str)
+                and any(ch.isalpha() for ch in MATH.sub("", node.value)))
+
     found = set()
     for node in ast.walk(ast.parse((CHECKS / "identities.py").read_text(encoding="utf-8"))):
         if (isinstance(node, ast.keyword) and node.arg in ("mutant_label", "domain_md")
-                and isinstance(node.value, ast.Constant)
-                and any(ch.isalpha() for ch in MATH.sub("", node.value.value))):
+                and words(node.value)):
             found.add(node.value.value)
+        if (isinstance(node, ast.Call) and getattr(node.func, "id", "") == "Identity"
+                and len(node.args) > 1 and words(node.args[1])
+                and re.search(r"[A-Za-z]{2,}", node.args[1].value)):
+            found.add(node.args[1].value)
     return found
 
 
@@ -60,7 +69,7 @@ def test_each_translation_keeps_placeholders_and_formulas(english, japanese) -> 
 
 # The texts the calls below pass in, as a book's catalog would translate them.
 CALLERS = {"one period": "1 周期", "4 pi": "4π", "max relative error": "最大相対誤差",
-           "xi stays in [-1, 1]": "ξ は [-1, 1] にとどまる", "§3, case II": "§3、場合 II",
+           "xi stays in [-1, 1]": "ξ は [-1, 1] にとどまる", "§3, case II": "§3、領域 II",
            "over {n} rotations, theta' >= {closest:.6f}":
                "{n} 回の回転にわたって theta' >= {closest:.6f}",
            "{n} swings": "{n} 回の振動"}

@@ -50,6 +50,13 @@ MESSAGES = {
     # numeric's default measure
     "max |residual|": "残差の絶対値の最大値",
     # --- identities.py: the labels of mutants and the domains a verdict quotes --------------
+    # The claims named in words (the book's mark of checked claims quotes them too).
+    "§3, after (10)": "§3、(10) の後",
+    "§3, case I": "§3、領域 I",
+    "§3, case II, direction": "§3、領域 II、向き",
+    "§4, before (14)": "§4、(14) の前",
+    "Proposition 1.2": "命題 1.2",
+    "Proposition 1.3": "命題 1.3",
     "the opposite sense of rotation": "逆向きの回転",
     "the other branch, $-2\\omega_0\\cos\\frac{\\theta}{2}$":
         "もう一方の枝 $-2\\omega_0\\cos\\frac{\\theta}{2}$",
