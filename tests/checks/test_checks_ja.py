@@ -182,9 +182,9 @@ def test_english_is_as_before(catalog) -> None:
 
 def test_a_claim_and_a_template_in_japanese(catalog) -> None:
     *_, templated, counted = _verdicts("ja")
-    assert str(templated) == "✔ §3、場合 II 12 回の回転にわたって theta' >= 0.500000。"
+    assert str(templated) == "✔ §3、領域 II 12 回の回転にわたって theta' >= 0.500000。"
     assert templated.claim == "§3, case II"  # the literal the registry reads
-    assert templated._repr_markdown_().startswith("✔ **§3、場合 II**")
+    assert templated._repr_markdown_().startswith("✔ **§3、領域 II**")
     assert str(counted) == ("✔ (8) は成り立つ。20 回の振動にわたって、残差の絶対値の最大値は "
                             "0 である。")
 
