@@ -26,6 +26,20 @@ s = sym.Identity("split", "(16)", lhs, rhs, mutant=m, mutant_label="the other br
 epp.plot_motion(motions, t, labels=["a swing", "$c_1 = 0$"])
 epp.plot_phase_portrait(label=False)
 ```
+
+```{code-cell} ipython3
+fig, ax = plt.subplots()
+ax.plot(t, x, label="a swing")
+ax.axhline(0, label=r"$\\theta = 0$")
+ax.set_xlabel("time $t$")
+ax.set(ylabel=r"angle $\\theta$ (rad)", title="Two swings", xlim=(0, 1))
+ax.text(0.5, 0.5, "the top", fontsize=9)
+ax.annotate("a turning point", xy=(1, 2))
+ax.legend(["one", "two"], title="kicks")
+fig.suptitle(f"{n} swings")
+bar.set_label("energy")
+epp.localize(fig)
+```
 '''
 
 
@@ -40,11 +54,27 @@ def test_every_kind_of_text_is_found_with_its_line(tmp_path) -> None:
         ("f'over {n} rotations'", 10, "fact", False),
         ("the other branch", 11, "Identity mutant_label", True),
         ("a swing", 12, "plot_motion labels", True),
+        ("a swing", 18, "plot label", True),
+        ("time $t$", 20, "set_xlabel", True),
+        ("angle $\\theta$ (rad)", 21, "set ylabel", True),
+        ("Two swings", 21, "set title", True),
+        ("the top", 22, "text", True),
+        ("a turning point", 23, "annotate", True),
+        ("one", 24, "legend", True),
+        ("two", 24, "legend", True),
+        ("kicks", 24, "legend title", True),
+        ("f'{n} swings'", 25, "suptitle", False),
+        ("energy", 26, "set_label", True),
     ]
     catalog = read_po(io.StringIO(pot(found)))
     assert [m.id for m in catalog if m.id] == ["§3, case II", "xi stays in [-1, 1]", "20 swings",
                                                "max relative error", "the other branch",
-                                               "a swing"]
+                                               "a swing", "time $t$", "angle $\\theta$ (rad)",
+                                               "Two swings", "the top", "a turning point",
+                                               "one", "two", "kicks", "energy"]
+    swing = catalog.get("a swing")
+    assert swing.auto_comments == ["plot_motion labels, plot label"]
+    assert swing.locations == [("page.md", 12), ("page.md", 18)]
 
 
 def test_the_book_passes_texts_and_the_command_writes_them(tmp_path, capsys) -> None:

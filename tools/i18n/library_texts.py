@@ -6,9 +6,13 @@ words a cell passes in are the cell's: a fact's sentence, a numerical check's ``
 named in words ("§3, case II"), a figure's ``labels``, ``label`` or ``points_label``. The
 library looks each up, exact English to Japanese, in the catalog that the environment
 variable ``ELLIPTIC_PENDULUM_MESSAGES`` names (see ``elliptic_pendulum.checks.verify``).
+The texts a cell draws itself with matplotlib (an axis label, a title, a legend's labels,
+a ``label=``, a ``text`` or ``annotate``) are translated after drawing, from the same
+catalogs, by ``elliptic_pendulum.plotting.localize(fig)``; they are found too.
 This finds them in the pages' code cells and writes them as a .pot file, one message per
-distinct text, with the pages and lines that pass it. A text built by an f-string cannot be
-a catalog's key: it is listed apart, to become a template with ``values=``.
+distinct text, with the pages and lines that pass it (and, as a comment, what receives
+it). A text built by an f-string cannot be a catalog's key: it is listed apart, to become
+a template with ``values=`` (or, in a figure, a literal with the number drawn apart).
 
     python -m tools.i18n.library_texts book out.pot
 """
@@ -49,6 +53,17 @@ def _cells(source: str):
 _VERIFY = {"fact": ((2,), ()), "numeric": ((), ("over", "measure", "mutant_label"))}
 _STATEMENT = ("mutant_label", "domain_md")
 _FIGURE = ("labels", "label", "points_label")
+# matplotlib's methods (of Axes, Figure, pyplot, a Colorbar) that draw a text a cell passes:
+# the argument positions and keywords that carry it. ``label=`` of any other call (plot,
+# scatter, fill_between, axhline, colorbar...) is a legend's or a colour bar's label.
+_MATPLOTLIB = {
+    "set_xlabel": ((0,), ("xlabel",)), "set_ylabel": ((0,), ("ylabel",)),
+    "set_title": ((0,), ("label",)), "suptitle": ((0,), ("t",)), "set_label": ((0,), ()),
+    "xlabel": ((0,), ("xlabel",)), "ylabel": ((0,), ("ylabel",)), "title": ((0,), ("label",)),
+    "text": ((2,), ("s",)), "figtext": ((2,), ("s",)), "annotate": ((0,), ("text",)),
+    "set": ((), ("xlabel", "ylabel", "title")),
+    "legend": ((), ("labels", "title")),
+}
 
 
 @dataclass(frozen=True)
@@ -83,6 +98,20 @@ def _figure_functions() -> set[str]:
     return {*epp.__all__, "animate", "animation_html"}
 
 
+def _drawn(name: str, call: ast.Call) -> list[tuple[str, ast.AST]]:
+    """The texts a matplotlib call in a cell draws: (what receives it, its node)."""
+    carried: list[tuple[str, ast.AST]] = []
+    if name in _MATPLOTLIB:
+        positions, keywords = _MATPLOTLIB[name]
+        if name == "legend" and call.args:  # legend(labels) or legend(handles, labels)
+            positions = (len(call.args) - 1,) if len(call.args) <= 2 else ()
+        carried += [(name, call.args[i]) for i in positions if i < len(call.args)]
+        carried += [(f"{name} {k.arg}", k.value) for k in call.keywords if k.arg in keywords]
+    if name not in ("set_title", "title"):
+        carried += [(f"{name} label", k.value) for k in call.keywords if k.arg == "label"]
+    return carried
+
+
 def texts(book: Path) -> list[Text]:
     """Return the texts the cells of the pages directly in ``book`` pass to the library."""
     figures = _figure_functions()
@@ -112,6 +141,8 @@ def texts(book: Path) -> list[Text]:
                 elif name in figures:
                     carried += [(f"{name} {k.arg}", k.value) for k in call.keywords
                                 if k.arg in _FIGURE]
+                else:
+                    carried += _drawn(name, call)
                 for argument, node in carried:
                     for text, literal in _texts_of(node):
                         if _words(text):
@@ -125,14 +156,21 @@ def _quoted(text: str) -> str:
 
 
 def pot(found: list[Text]) -> str:
-    """Return the literal texts as a gettext template, each once, with where it is passed."""
+    """Return the literal texts as a gettext template, each once, with where it is passed.
+
+    A comment (``#.``) says what receives it: ``fact``, ``over``, ``set_xlabel``...
+    """
     where: dict[str, list[str]] = {}
+    receivers: dict[str, list[str]] = {}
     for t in found:
         if t.literal:
             where.setdefault(t.text, []).append(f"{t.page}.md:{t.line}")
+            if t.argument not in receivers.setdefault(t.text, []):
+                receivers[t.text].append(t.argument)
     out = ['msgid ""', 'msgstr ""', '"Content-Type: text/plain; charset=UTF-8\\n"', ""]
     for text, places in where.items():
-        out += [f"#: {' '.join(places)}", f"msgid {_quoted(text)}", 'msgstr ""', ""]
+        out += [f"#. {', '.join(receivers[text])}", f"#: {' '.join(places)}",
+                f"msgid {_quoted(text)}", 'msgstr ""', ""]
     return "\n".join(out)
 
 
@@ -144,8 +182,8 @@ def main(argv: list[str]) -> int:
     print(f"{len(found)} texts passed, {len(literal)} distinct literals written to {target}")
     for t in found:
         if not t.literal:
-            print(f"f-string (make it a template with values=): {t.page}.md:{t.line} "
-                  f"{t.argument}: {t.text}")
+            print(f"f-string (make it a template with values=, or a literal): "
+                  f"{t.page}.md:{t.line} {t.argument}: {t.text}")
     return 0
 
 
