@@ -84,3 +84,10 @@ def test_the_book_passes_texts_and_the_command_writes_them(tmp_path, capsys) -> 
     written = read_po(io.StringIO((tmp_path / "out.pot").read_text(encoding="utf-8")))
     assert len([m for m in written if m.id]) > 100
     assert "distinct literals written" in capsys.readouterr().out
+
+
+def test_a_text_built_by_an_f_string_fails_the_command(tmp_path, capsys) -> None:
+    # No catalog can key it, so a translated edition would show it in English.
+    (tmp_path / "page.md").write_text(PAGE, encoding="utf-8")
+    assert main([str(tmp_path), str(tmp_path / "out.pot")]) == 1
+    assert "page.md:10 fact: f'over {n} rotations'" in capsys.readouterr().out
