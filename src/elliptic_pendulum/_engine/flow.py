@@ -17,6 +17,7 @@ from typing import Any, NamedTuple
 import numpy as np
 
 from . import landen as _landen
+from . import remainder as _remainder
 from .codes import LIBRATION, ROTATION, SEPARATRIX
 from .landen import _PI_HI, _PI_LO, _two_prod, _two_sum
 
@@ -27,6 +28,8 @@ CHUNK = 2 ** 15
 _DEEP = 2.0 ** -300
 # Below this modulus (II), theta' is formed from s and w lifted by _LIFT (see _lifted).
 _SMALL_K, _LIFT = 2.0 ** -500, 2.0 ** 600
+# Up to this many states, the remainder's low part is formed on Python floats (see _lows).
+_FEW = 4
 
 
 class Params(NamedTuple):
@@ -46,6 +49,11 @@ class Params(NamedTuple):
     rate_lo: np.ndarray
     quarters: np.ndarray  # the argument at t = 0 as quarters K + rem (|rem| <~ K/2), exactly
     rem: np.ndarray
+    s_lo: np.ndarray      # the low parts of s, c, w, k and kc (the Landen constants' kc):
+    c_lo: np.ndarray      # what the remainder in double-double is formed from (_direct)
+    w_lo: np.ndarray
+    k_lo: np.ndarray
+    kc_lo: np.ndarray
     landen: _landen.Constants
 
 
@@ -64,7 +72,12 @@ def _unpieces(pieces: list[Any], levels: int) -> Params:
     return Params._make([*pieces[:_N], c])
 
 
-def _kernel(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool):
+def _kernel(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool, later=None):
+    """Return theta and theta' of one chunk.
+
+    With ``later`` (a list) the redo near theta = 0 is left to the caller: its points' mask
+    is appended, and their theta is not final.
+    """
     lib, rot = p.code == LIBRATION, p.code == ROTATION
     theta = dtheta = None
     t_all = t
@@ -120,7 +133,10 @@ def _kernel(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool):
                 theta = th_r if theta is None else np.where(rot, th_r, theta)
                 redo = redo_r if redo is None else np.where(rot, redo_r, redo)
         if want_theta and np.any(redo & (lib | rot)):
-            theta = _direct(p, t, (a, a_lo), redo & (lib | rot), theta)
+            if later is None:
+                theta = _direct(p, t, redo & (lib | rot), theta)
+            else:
+                later.append(redo & (lib | rot))
     sep = (p.code == SEPARATRIX) & ~p.still
     if np.any(sep):
         with np.errstate(invalid="ignore", divide="ignore"):  # as above, for other regimes
@@ -242,12 +258,13 @@ def _turned_float(p, quarters, rest):
     return big + small, small
 
 
-def _direct(p: Params, t, tau, redo, theta):
+def _direct(p: Params, t, redo, theta, low=None):
     """Theta at the points ``redo`` from u = tau + rem + quarters K, reduced exactly.
 
     Near theta = 0 (mod 2 pi) the addition theorem cancels; there the argument itself, with
     the phase held as whole quarter periods plus an exact remainder, gives sn(u) (II) and
-    am(u) (IV) to full relative accuracy. Only these few points are evaluated again.
+    am(u) (IV) to full relative accuracy. Only these few points are evaluated again. ``low``
+    is the remainder's low part per state (:func:`_lows`), made here if not given.
     """
     shape = theta.shape
     mask = np.broadcast_to(redo, shape)
@@ -261,8 +278,13 @@ def _direct(p: Params, t, tau, redo, theta):
     landen = _landen.Constants._make([*(pick(x) for x in c[:_landen.SCALARS]),
                                       tuple(pick(x) for x in c.mu),
                                       tuple(pick(x) for x in c.rho)])
-    u, u_lo = _two_sum(pick(tau[0]), pick(p.rem))
-    u_lo = u_lo + pick(tau[1] + p.rate_lo * t)
+    if low is None:
+        low = _lows(p, _need(p, mask))
+    # tau = rate t as a double-double, as in _kernel (elementwise: the same bits)
+    t_at = pick(t)
+    a, a_lo = _two_prod(pick(p.rate), t_at)
+    u, u_lo = _two_sum(a, pick(p.rem))
+    u_lo = u_lo + ((a_lo + pick(p.rate_lo) * t_at) + pick(low))
     sn, _, dn, (quarters, rest) = _landen.evaluate(u, landen, u_lo, amplitude="split",
                                                    name="t", quarters=pick(p.quarters))
     sub = Params._make([*(pick(x) for x in p[:_N]), landen])
@@ -271,6 +293,43 @@ def _direct(p: Params, t, tau, redo, theta):
     theta = np.array(theta)  # a writable copy (a 0-d result may be a numpy scalar)
     theta[where] = direct
     return theta
+
+
+def _need(p: Params, mask):
+    """Return, in the shape of the states, where a state of II or IV has a point in ``mask``."""
+    shape = np.shape(p.code)
+    full = np.shape(mask)
+    padded = (1,) * (len(full) - len(shape)) + shape
+    axes = tuple(i for i, (n, m) in enumerate(zip(padded, full, strict=True)) if n == 1 < m)
+    need = np.reshape(np.any(mask, axis=axes, keepdims=True) if axes else mask, shape)
+    return need & ((p.code == LIBRATION) | (p.code == ROTATION))
+
+
+def _lows(p: Params, need):
+    """Return the remainder's low part (:mod:`.remainder`) where ``need``, in the states' shape.
+
+    Once per state, not per point (a state's many times share it); on Python floats where
+    only a few states need it (the same bits as on arrays, faster). Elsewhere 0.
+    """
+    shape = np.shape(p.code)
+    count = int(np.count_nonzero(need))
+    if count == 0:
+        return 0.0
+    where = np.nonzero(need) if shape else ()
+    fields = [np.broadcast_to(x, shape)[where] for x in (
+        p.code == LIBRATION, p.quarters, p.rem, p.s, p.s_lo, p.c, p.c_lo, p.w, p.w_lo, p.k,
+        p.k_lo, p.landen.kc, p.kc_lo)]
+    if count <= _FEW:
+        low = np.array([_remainder.low_part_float(
+            bool(f[0]), float(f[1]), float(f[2]), *(
+                (float(f[i]), float(f[i + 1])) for i in range(3, 13, 2)))
+            for f in zip(*(np.atleast_1d(x) for x in fields), strict=True)])
+    else:
+        low = _remainder.low_part(fields[0], fields[1], fields[2],
+                                  *((fields[i], fields[i + 1]) for i in range(3, 13, 2)))
+    out = np.zeros(shape)
+    out[where] = np.reshape(low, np.shape(out[where]))
+    return out
 
 
 def _separatrix(p: Params, t: np.ndarray):
@@ -331,23 +390,41 @@ def _evaluate(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool):
     outs = [np.empty(shape) if want else None for want in (want_theta, want_dtheta)]
     axis = next(a for a in range(nd) if math.prod(shape[a + 1:]) <= CHUNK)
     step = max(1, CHUNK // math.prod(shape[axis + 1:]))
+    # The redo near theta = 0 waits for the end: the remainder's low part is then made once
+    # for every state that needs it in any chunk (one call on all of them, not one per chunk:
+    # a state's many chunks share it, and a few hundred operations cost less on one array).
+    later: list = []
     for outer in np.ndindex(shape[:axis]):
         for start in range(0, shape[axis], step):
             # Slices only (an integer index would drop a dimension); a parameter of length 1
             # along a dimension broadcasts and is not cut.
             key = (*(slice(i, i + 1) for i in outer), slice(start, start + step))
-
-            def cut(x, key=key):
-                return x[tuple(k if n > 1 else slice(None)
-                               for k, n in zip(key, x.shape, strict=False))]
-
-            sub = _unpieces([cut(x) for x in pieces], levels)
-            theta, dtheta = _kernel(sub, cut(t), want_theta, want_dtheta)
+            sub = _unpieces([_cut(x, key) for x in pieces], levels)
+            masks: list = []
+            theta, dtheta = _kernel(sub, _cut(t, key), want_theta, want_dtheta, masks)
             for out, value in zip(outs, (theta, dtheta), strict=True):
                 if out is not None:
                     out[key] = value
+            later += [(key, mask) for mask in masks]
+    if later:
+        whole = _unpieces(pieces, levels)
+        need = np.zeros(np.shape(whole.code), dtype=bool)
+        for key, mask in later:
+            chunk = _cut(need, key)  # a view: the chunk's states in the whole
+            chunk |= _need(_unpieces([_cut(x, key) for x in pieces], levels), mask)
+        low = _lows(whole, need)
+        theta_out = outs[0]
+        assert theta_out is not None  # only theta is redone
+        for key, mask in later:
+            sub = _unpieces([_cut(x, key) for x in pieces], levels)
+            theta_out[key] = _direct(sub, _cut(t, key), mask, theta_out[key],
+                                     _cut(low, key) if np.ndim(low) else low)
     return outs[0], outs[1]
 
+
+def _cut(x, key):
+    """Return x at the chunk ``key`` (slices); a dimension of length 1 broadcasts, uncut."""
+    return x[tuple(k if n > 1 else slice(None) for k, n in zip(key, x.shape, strict=False))]
 
 
 def state_float(p, t: float, want_theta: bool = True, want_dtheta: bool = True):
@@ -404,7 +481,9 @@ def state_float(p, t: float, want_theta: bool = True, want_dtheta: bool = True):
                       / (cs * cs + s * s * cn * cn)) * back
     if want_theta and redo:
         u, u_lo = _two_sum(a, p.rem)
-        u_lo = u_lo + (a_lo + p.rate_lo * t)
+        low = _remainder.low_part_float(not rot, p.quarters, p.rem, (s, p.s_lo), (cs, p.c_lo),
+                                        (w, p.w_lo), (k, p.k_lo), (c.kc, p.kc_lo))
+        u_lo = u_lo + ((a_lo + p.rate_lo * t) + low)
         sn, _, dn, (quarters, rest) = _landen.evaluate_float(u, c, u_lo, amplitude="split",
                                                              name="t", quarters=p.quarters)
         theta = _turned_float(p, quarters, rest)[0] if rot else \
