@@ -6,7 +6,7 @@ beside the zero crossing at t = -0.09967. There the elliptic argument u = omega0
 cancels to a small v, and c2 (whole quarter periods plus a remainder) had its remainder only
 to a double: its rounding, a few 1e-17, is a relative 1e-17 / |v| of theta, 1e9 ulp at
 |t - t_c| = 1e-9 |t_c|. The remainder is now carried in double-double where theta is
-evaluated again near 0 (flow._direct, _engine/remainder.py).
+evaluated again near 0 (redo.direct, _engine/remainder.py).
 
 Every expectation comes from outside the library: :class:`tests.mpref.Exact`, the note's (25)
 and (46) in mpmath at 40 digits (more where the state needs them) from the exact doubles of
@@ -47,7 +47,7 @@ STATES = [
     pytest.param(0.6, -3.0, 1.0, id="IV-backward"),
 ]
 
-# Relative offsets of t from t_c: inside the band of flow._direct (|theta| < size / 64).
+# Relative offsets of t from t_c: inside the band of redo.direct (|theta| < size / 64).
 OFFSETS = [1e-3, -1e-3, 3e-5, -1e-7, 1e-9, -1e-12]
 
 
@@ -80,7 +80,7 @@ def check(theta0, dtheta0, omega0, ts):
     m = quietly(ep.solve, theta0, dtheta0, omega0)
     theta = quietly(m.theta, np.array(ts))
     for t, a, b in zip(ts, theta, expected, strict=True):
-        assert abs(b) < ex.size / 64  # the band of flow._direct, where this bound is promised
+        assert abs(b) < ex.size / 64  # the band of redo.direct, where this bound is promised
         assert ulps(a, b) <= 8, (theta0, dtheta0, omega0, t, float(a), float(b), ulps(a, b))
         # the scalar path: the same bits
         assert np.float64(quietly(m.theta, float(t))).tobytes() == a.tobytes(), (t, a)

@@ -12,14 +12,16 @@ Every operation is elementwise: an element's value does not depend on the other 
 from __future__ import annotations
 
 import math
-from typing import Any, NamedTuple
+from typing import Any
 
 import numpy as np
 
 from . import landen as _landen
-from . import remainder as _remainder
+from . import params as _params
+from . import redo as _redo
 from .codes import LIBRATION, ROTATION, SEPARATRIX
-from .landen import _PI_HI, _PI_LO, _two_prod, _two_sum
+from .landen import _two_prod
+from .params import Params
 
 __all__ = ["Params", "evaluate", "CHUNK"]
 
@@ -28,48 +30,6 @@ CHUNK = 2 ** 15
 _DEEP = 2.0 ** -300
 # Below this modulus (II), theta' is formed from s and w lifted by _LIFT (see _lifted).
 _SMALL_K, _LIFT = 2.0 ** -500, 2.0 ** 600
-# Up to this many states, the remainder's low part is formed on Python floats (see _lows).
-_FEW = 4
-
-
-class Params(NamedTuple):
-    """Per-state arrays (one shape S), everything the evaluation needs."""
-
-    code: np.ndarray
-    still: np.ndarray     # at rest (I) or balanced at the top (III): theta = theta0 forever
-    theta0: np.ndarray
-    turns: np.ndarray
-    omega0: np.ndarray
-    sigma: np.ndarray     # direction +-1 (III, IV); +1 otherwise
-    k: np.ndarray         # sqrt(s^2 + w^2): alpha (II), 1/gamma (IV)
-    s: np.ndarray         # sin(r/2), cos(r/2) and theta'/(2 omega0) of the initial state
-    c: np.ndarray
-    w: np.ndarray
-    rate: np.ndarray      # d(argument)/dt as a double-double; 0 outside II and IV
-    rate_lo: np.ndarray
-    quarters: np.ndarray  # the argument at t = 0 as quarters K + rem (|rem| <~ K/2), exactly
-    rem: np.ndarray
-    s_lo: np.ndarray      # the low parts of s, c, w, k and kc (the Landen constants' kc):
-    c_lo: np.ndarray      # what the remainder in double-double is formed from (_direct)
-    w_lo: np.ndarray
-    k_lo: np.ndarray
-    kc_lo: np.ndarray
-    landen: _landen.Constants
-
-
-_N = len(Params._fields) - 1  # the per-state arrays before the Landen constants
-
-
-def _pieces(p: Params) -> list[Any]:
-    c = p.landen
-    return [*p[:_N], c.kc, c.quarter, c.k_hi, c.k_mid, c.k_lo, c.scale, c.scale_lo, *c.mu, *c.rho]
-
-
-def _unpieces(pieces: list[Any], levels: int) -> Params:
-    m = _N + _landen.SCALARS
-    c = _landen.Constants._make([*pieces[_N:m], tuple(pieces[m:m + levels]),
-                                 tuple(pieces[m + levels:])])
-    return Params._make([*pieces[:_N], c])
 
 
 def _kernel(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool, later=None):
@@ -128,13 +88,13 @@ def _kernel(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool, later
                 redo = np.abs(lib_yx[0]) < lib_yx[2] * (1.0 / 64.0)
             if any_rot:
                 quarters, rest = am
-                th_r, small = _turned(p, quarters, rest + angle)
+                th_r, small = _redo.turned(p, quarters, rest + angle)
                 redo_r = np.abs(small) < (np.abs(rest) + np.abs(angle)) * (1.0 / 64.0)
                 theta = th_r if theta is None else np.where(rot, th_r, theta)
                 redo = redo_r if redo is None else np.where(rot, redo_r, redo)
         if want_theta and np.any(redo & (lib | rot)):
             if later is None:
-                theta = _direct(p, t, redo & (lib | rot), theta)
+                theta = _redo.direct(p, t, redo & (lib | rot), theta)
             else:
                 later.append(redo & (lib | rot))
     sep = (p.code == SEPARATRIX) & ~p.still
@@ -238,100 +198,6 @@ def _rotation(p: Params, sn, cn, dn, want_theta: bool, want_dtheta: bool):
     return yx, dtheta
 
 
-def _turned(p: Params, quarters, rest):
-    """Theta = 2 pi m + sigma 2 (quarters pi/2 + rest) with the multiple of pi added exactly.
-
-    N pi (N = 2 m + sigma quarters) as a double-double, so that a theta near 0 after many
-    turns keeps its relative digits. Returns theta and its part beside N pi's double.
-    """
-    count = 2.0 * np.rint(p.turns / (2.0 * _PI_HI)) + p.sigma * quarters
-    big, err = _two_prod(count, _PI_HI)
-    small = (err + count * _PI_LO) + p.sigma * 2.0 * rest
-    return big + small, small
-
-
-def _turned_float(p, quarters, rest):
-    """Compute :func:`_turned` of one state on Python floats (its twin)."""
-    count = 2.0 * float(round(p.turns / (2.0 * _PI_HI))) + p.sigma * quarters
-    big, err = _two_prod(count, _PI_HI)
-    small = (err + count * _PI_LO) + p.sigma * 2.0 * rest
-    return big + small, small
-
-
-def _direct(p: Params, t, redo, theta, low=None):
-    """Theta at the points ``redo`` from u = tau + rem + quarters K, reduced exactly.
-
-    Near theta = 0 (mod 2 pi) the addition theorem cancels; there the argument itself, with
-    the phase held as whole quarter periods plus an exact remainder, gives sn(u) (II) and
-    am(u) (IV) to full relative accuracy. Only these few points are evaluated again. ``low``
-    is the remainder's low part per state (:func:`_lows`), made here if not given.
-    """
-    shape = theta.shape
-    mask = np.broadcast_to(redo, shape)
-    # Integer indices: gathering costs only as many as are redone (a 0-d mask indexes itself).
-    where = np.nonzero(mask) if mask.ndim else mask
-
-    def pick(x):
-        return np.broadcast_to(x, shape)[where]
-
-    c = p.landen
-    landen = _landen.Constants._make([*(pick(x) for x in c[:_landen.SCALARS]),
-                                      tuple(pick(x) for x in c.mu),
-                                      tuple(pick(x) for x in c.rho)])
-    if low is None:
-        low = _lows(p, _need(p, mask))
-    # tau = rate t as a double-double, as in _kernel (elementwise: the same bits)
-    t_at = pick(t)
-    a, a_lo = _two_prod(pick(p.rate), t_at)
-    u, u_lo = _two_sum(a, pick(p.rem))
-    u_lo = u_lo + ((a_lo + pick(p.rate_lo) * t_at) + pick(low))
-    sn, _, dn, (quarters, rest) = _landen.evaluate(u, landen, u_lo, amplitude="split",
-                                                   name="t", quarters=pick(p.quarters))
-    sub = Params._make([*(pick(x) for x in p[:_N]), landen])
-    turned, _ = _turned(sub, quarters, rest)
-    direct = np.where(sub.code == LIBRATION, sub.turns + 2.0 * np.arctan2(sub.k * sn, dn), turned)
-    theta = np.array(theta)  # a writable copy (a 0-d result may be a numpy scalar)
-    theta[where] = direct
-    return theta
-
-
-def _need(p: Params, mask):
-    """Return, in the shape of the states, where a state of II or IV has a point in ``mask``."""
-    shape = np.shape(p.code)
-    full = np.shape(mask)
-    padded = (1,) * (len(full) - len(shape)) + shape
-    axes = tuple(i for i, (n, m) in enumerate(zip(padded, full, strict=True)) if n == 1 < m)
-    need = np.reshape(np.any(mask, axis=axes, keepdims=True) if axes else mask, shape)
-    return need & ((p.code == LIBRATION) | (p.code == ROTATION))
-
-
-def _lows(p: Params, need):
-    """Return the remainder's low part (:mod:`.remainder`) where ``need``, in the states' shape.
-
-    Once per state, not per point (a state's many times share it); on Python floats where
-    only a few states need it (the same bits as on arrays, faster). Elsewhere 0.
-    """
-    shape = np.shape(p.code)
-    count = int(np.count_nonzero(need))
-    if count == 0:
-        return 0.0
-    where = np.nonzero(need) if shape else ()
-    fields = [np.broadcast_to(x, shape)[where] for x in (
-        p.code == LIBRATION, p.quarters, p.rem, p.s, p.s_lo, p.c, p.c_lo, p.w, p.w_lo, p.k,
-        p.k_lo, p.landen.kc, p.kc_lo)]
-    if count <= _FEW:
-        low = np.array([_remainder.low_part_float(
-            bool(f[0]), float(f[1]), float(f[2]), *(
-                (float(f[i]), float(f[i + 1])) for i in range(3, 13, 2)))
-            for f in zip(*(np.atleast_1d(x) for x in fields), strict=True)])
-    else:
-        low = _remainder.low_part(fields[0], fields[1], fields[2],
-                                  *((fields[i], fields[i + 1]) for i in range(3, 13, 2)))
-    out = np.zeros(shape)
-    out[where] = np.reshape(low, np.shape(out[where]))
-    return out
-
-
 def _separatrix(p: Params, t: np.ndarray):
     """(28) by the addition theorem from the initial state: exact at t = 0.
 
@@ -384,7 +250,7 @@ def _evaluate(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool):
         return (np.array(np.broadcast_to(theta, shape)) if want_theta else None,
                 np.array(np.broadcast_to(dtheta, shape)) if want_dtheta else None)
     nd = len(shape)
-    pieces = [np.reshape(x, (1,) * (nd - np.ndim(x)) + np.shape(x)) for x in _pieces(p)]
+    pieces = [np.reshape(x, (1,) * (nd - np.ndim(x)) + np.shape(x)) for x in _params.pieces(p)]
     t = np.reshape(t, (1,) * (nd - t.ndim) + t.shape)
     levels = len(p.landen.mu)
     outs = [np.empty(shape) if want else None for want in (want_theta, want_dtheta)]
@@ -399,7 +265,7 @@ def _evaluate(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool):
             # Slices only (an integer index would drop a dimension); a parameter of length 1
             # along a dimension broadcasts and is not cut.
             key = (*(slice(i, i + 1) for i in outer), slice(start, start + step))
-            sub = _unpieces([_cut(x, key) for x in pieces], levels)
+            sub = _params.unpieces([_cut(x, key) for x in pieces], levels)
             masks: list = []
             theta, dtheta = _kernel(sub, _cut(t, key), want_theta, want_dtheta, masks)
             for out, value in zip(outs, (theta, dtheta), strict=True):
@@ -407,17 +273,17 @@ def _evaluate(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool):
                     out[key] = value
             later += [(key, mask) for mask in masks]
     if later:
-        whole = _unpieces(pieces, levels)
+        whole = _params.unpieces(pieces, levels)
         need = np.zeros(np.shape(whole.code), dtype=bool)
         for key, mask in later:
             chunk = _cut(need, key)  # a view: the chunk's states in the whole
-            chunk |= _need(_unpieces([_cut(x, key) for x in pieces], levels), mask)
-        low = _lows(whole, need)
+            chunk |= _redo.need(_params.unpieces([_cut(x, key) for x in pieces], levels), mask)
+        low = _redo.lows(whole, need)
         theta_out = outs[0]
         assert theta_out is not None  # only theta is redone
         for key, mask in later:
-            sub = _unpieces([_cut(x, key) for x in pieces], levels)
-            theta_out[key] = _direct(sub, _cut(t, key), mask, theta_out[key],
+            sub = _params.unpieces([_cut(x, key) for x in pieces], levels)
+            theta_out[key] = _redo.direct(sub, _cut(t, key), mask, theta_out[key],
                                      _cut(low, key) if np.ndim(low) else low)
     return outs[0], outs[1]
 
@@ -458,7 +324,7 @@ def state_float(p, t: float, want_theta: bool = True, want_dtheta: bool = True):
             x = cs * spread - sigma * s * sn * cn_l * dn * d0m1
             delta = _landen._f(np.arctan2, y, x)
             quarters, rest = am
-            theta, small = _turned_float(p, quarters, rest + delta)
+            theta, small = _redo.turned_float(p, quarters, rest + delta)
             redo = abs(small) < (abs(rest) + abs(delta)) * (1.0 / 64.0)
         if want_dtheta:
             s_k = s / k
@@ -480,12 +346,5 @@ def state_float(p, t: float, want_theta: bool = True, want_dtheta: bool = True):
             dtheta = (2.0 * p.omega0 * (w_l * cn - s_l * cs * sn * dn)
                       / (cs * cs + s * s * cn * cn)) * back
     if want_theta and redo:
-        u, u_lo = _two_sum(a, p.rem)
-        low = _remainder.low_part_float(not rot, p.quarters, p.rem, (s, p.s_lo), (cs, p.c_lo),
-                                        (w, p.w_lo), (k, p.k_lo), (c.kc, p.kc_lo))
-        u_lo = u_lo + ((a_lo + p.rate_lo * t) + low)
-        sn, _, dn, (quarters, rest) = _landen.evaluate_float(u, c, u_lo, amplitude="split",
-                                                             name="t", quarters=p.quarters)
-        theta = _turned_float(p, quarters, rest)[0] if rot else \
-            p.turns + 2.0 * _landen._f(np.arctan2, k * sn, dn)
+        theta = _redo.direct_float(p, t)
     return theta, dtheta

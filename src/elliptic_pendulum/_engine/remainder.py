@@ -12,7 +12,7 @@ double-double; what comes back is the low part rem_lo with rem + rem_lo within a
 of the exact remainder (the phase's own limit, docs/design.md "Never lose the energy").
 
 It costs some thousand operations per state, several times the whole classification, so it
-runs only where :mod:`.flow` evaluates theta near a crossing again, for the states that need
+runs only where :mod:`.redo` evaluates theta near a crossing again, for the states that need
 it. The double-double operations are plain arithmetic: :func:`rf` serves NumPy arrays and
 Python floats alike, to the bit; the arguments of the branches have a twin on floats.
 """
