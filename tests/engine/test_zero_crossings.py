@@ -45,6 +45,10 @@ STATES = [
     pytest.param(0.5, -2 * math.cos(0.25) * (1 + 1e-9), 1.0, id="IV-beside-the-separatrix"),
     pytest.param(-0.4, 2.5, 1.0, id="IV-forward"),
     pytest.param(0.6, -3.0, 1.0, id="IV-backward"),
+    # IV back to 0 from more than a quarter period away: theta = N pi + 2 am cancels N pi
+    # itself (N = +-1), which flow's test for the redo did not see (1e9 ulp at 1e-9 of t_c)
+    pytest.param(2.0, 1.5, 0.5, id="IV-from-a-quarter-period-away"),
+    pytest.param(3.0, 0.2, 1.0, id="IV-from-near-the-top"),
 ]
 
 # Relative offsets of t from t_c: inside the band of redo.direct (|theta| < size / 64).

@@ -30,6 +30,8 @@ CHUNK = 2 ** 15
 _DEEP = 2.0 ** -300
 # Below this modulus (II), theta' is formed from s and w lifted by _LIFT (see _lifted).
 _SMALL_K, _LIFT = 2.0 ** -500, 2.0 ** 600
+# Below this |theta| a rotation's theta is evaluated again (see _kernel): pi / 64.
+_NEAR_ZERO = 0.049
 
 
 def _kernel(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool, later=None):
@@ -89,7 +91,11 @@ def _kernel(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool, later
             if any_rot:
                 quarters, rest = am
                 th_r, small = _redo.turned(p, quarters, rest + angle)
-                redo_r = np.abs(small) < (np.abs(rest) + np.abs(angle)) * (1.0 / 64.0)
+                # theta near 0: where the part beside N pi cancels, or where it cancels N pi
+                # itself (a rotation back to 0 from a quarter period away, N = +-1 or +-2:
+                # |theta| below pi/64 <= |N pi| / 64; at N = 0 the redo costs no accuracy).
+                redo_r = ((np.abs(small) < (np.abs(rest) + np.abs(angle)) * (1.0 / 64.0))
+                          | (np.abs(th_r) < _NEAR_ZERO))
                 theta = th_r if theta is None else np.where(rot, th_r, theta)
                 redo = redo_r if redo is None else np.where(rot, redo_r, redo)
         if want_theta and np.any(redo & (lib | rot)):
@@ -325,7 +331,8 @@ def state_float(p, t: float, want_theta: bool = True, want_dtheta: bool = True):
             delta = _landen._f(np.arctan2, y, x)
             quarters, rest = am
             theta, small = _redo.turned_float(p, quarters, rest + delta)
-            redo = abs(small) < (abs(rest) + abs(delta)) * (1.0 / 64.0)
+            redo = (abs(small) < (abs(rest) + abs(delta)) * (1.0 / 64.0)
+                    or abs(theta) < _NEAR_ZERO)  # as in _kernel
         if want_dtheta:
             s_k = s / k
             dn_u = ((d0_l * dn - sigma * s_k * (c_l / k) * sn * cn)
