@@ -122,8 +122,8 @@ def test_a_field_meets_japanese_with_a_space_as_the_book_writes() -> None:
 
 
 def test_every_word_of_a_motions_table_has_japanese_and_no_other() -> None:
-    # The English is motion.py's (its say(...) calls) and the regimes' names.
-    english = say_literals(SRC / "motion.py") | {r.name.lower() for r in Regime}
+    # The English is _display.py's (its say(...) calls) and the regimes' names.
+    english = say_literals(SRC / "_display.py") | {r.name.lower() for r in Regime}
     assert sorted(english - set(_ja.MESSAGES)) == [], "words without Japanese"
     assert sorted(set(_ja.MESSAGES) - english) == [], "Japanese for words no one writes"
 
@@ -156,7 +156,7 @@ def test_a_motions_table_in_japanese(clean_environment) -> None:
 
 
 def test_english_is_as_before(clean_environment) -> None:
-    # The table as motion.py wrote it before it had languages.
+    # The table as the package wrote it before it had languages.
     assert MOTIONS[0]._repr_html_() == (
         "<table><caption>elliptic_pendulum.Motion</caption>"
         "<tr><th style='text-align:left'>regime</th><td style='text-align:left'>II (libration)"

@@ -1,11 +1,11 @@
 """Japanese for what the package's top-level modules show a reader: a Motion's table.
 
-MESSAGES maps each English text of ``motion._summary`` (the first argument of each
+MESSAGES maps each English text of ``_display._summary`` (the first argument of each
 ``say(...)`` call there) and the regimes' names to its Japanese, with the same
 ``{placeholders}``, in the book's terms (book/glossary.md: 領域, 振動, 回転, セパラトリクス,
 振幅, 周期, 第一積分). A symbol keeps its name as the one-line repr writes it (theta0,
 omega0, c1, gamma), after the Japanese name of what it is. tests/test_motion_ja.py keeps the
-table in step with motion.py.
+table in step with _display.py.
 """
 
 from __future__ import annotations

@@ -15,7 +15,6 @@ IV, evaluated so that no digit is lost near the bottom or the top:
 
 from __future__ import annotations
 
-import html
 import math
 from collections.abc import Iterator
 from dataclasses import dataclass, field
@@ -24,10 +23,11 @@ from typing import Any, cast, overload
 import numpy as np
 import numpy.typing as npt
 
+from . import _display
 from ._engine import flow as _flow
 from ._engine import states as _states
 from ._engine.codes import SEPARATRIX
-from ._i18n import Say, say_for
+from ._i18n import say_for
 from ._validation import FloatOrArray, positive_array, real_array, scalar_or_array
 from .regimes import REGIMES, Regime
 
@@ -183,7 +183,7 @@ class Motion:
         >>> solve([0.5, 0.0], [0.0, 3.0])
         Motion(shape=(2,), regimes={'II': 1, 'IV': 1})
         """
-        return _text(self)
+        return _display.text(self)
 
     def _repr_html_(self) -> str:
         """Return a small HTML table for Jupyter: regime, c1, amplitude or gamma, period.
@@ -191,7 +191,7 @@ class Motion:
         Its words are in the environment's language as gettext reads it (Japanese for
         LANGUAGE=ja), read at each display; the one-line repr stays Python.
         """
-        return _html(self, say_for(__package__, None))
+        return _display.html(self, say_for(__package__, None))
 
     def __bool__(self) -> bool:
         """Return True for a single state; for an array of states, ``len(m) != 0``.
@@ -353,54 +353,3 @@ def _frozen(fields: Any) -> Any:
         for x in fields:
             _frozen(x)
     return fields
-
-
-# --- how a Motion shows itself: a one-line repr and a small table for Jupyter --------------
-
-
-def _summary(motion: Any, say: Say) -> list[tuple[str, str]]:
-    """Return (label, value) rows: regime, c1, amplitude or gamma, period; or counts."""
-    if motion.shape != ():
-        counts = {r: int(np.count_nonzero(motion._p.code == i)) for i, r in enumerate(REGIMES)}
-        rows = [(say("states"), say("{count} of shape {shape}", count=int(np.prod(motion.shape)),
-                                    shape=motion.shape))]
-        rows += [(say("regime {numeral} ({name})", numeral=r.value, name=say(r.name.lower())),
-                  str(n)) for r, n in counts.items() if n]
-        return rows
-    regime = motion.regime
-    rows = [(say("regime"), say("{numeral} ({name})", numeral=regime.value,
-                                name=say(regime.name.lower()))),
-            (say("theta0, theta0'"), f"{motion.theta0:.6g}, {motion.dtheta0:.6g}"),
-            (say("omega0"), f"{motion.omega0:.6g}"),
-            (say("c1"), f"{motion.energy_constant:.10g}")]
-    if regime is Regime.ROTATION:
-        rows.append((say("gamma"), f"{motion.modulus:.10g}"))
-        rows.append((say("time per revolution"), f"{motion.period:.10g}"))
-    else:
-        rows.append((say("amplitude"), f"{motion.amplitude:.10g}"))
-        rows.append((say("period"),
-                     "inf" if math.isinf(motion.period) else f"{motion.period:.10g}"))
-    return rows
-
-
-def _text(motion: Any) -> str:
-    """Return the one-line repr."""
-    if motion.shape != ():
-        counts = {r.value: int(np.count_nonzero(motion._p.code == i))
-                  for i, r in enumerate(REGIMES)}
-        regimes = {k: n for k, n in counts.items() if n}
-        return f"Motion(shape={motion.shape}, regimes={regimes})"
-    size = ("gamma", motion.modulus) if motion.regime is Regime.ROTATION else \
-        ("amplitude", motion.amplitude)
-    fields = [("theta0", motion.theta0), ("dtheta0", motion.dtheta0), ("omega0", motion.omega0),
-              ("c1", motion.energy_constant), size, ("period", motion.period)]
-    return (f"Motion(regime='{motion.regime.value}', "
-            + ", ".join(f"{k}={v:.10g}" for k, v in fields) + ")")
-
-
-def _html(motion: Any, say: Say) -> str:
-    """Return the HTML table, its words by ``say``."""
-    body = "".join(f"<tr><th style='text-align:left'>{html.escape(k)}</th>"
-                   f"<td style='text-align:left'>{html.escape(v)}</td></tr>"
-                   for k, v in _summary(motion, say))
-    return f"<table><caption>elliptic_pendulum.Motion</caption>{body}</table>"

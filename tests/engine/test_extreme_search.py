@@ -52,7 +52,7 @@ pytestmark = pytest.mark.slow
 
 # theta within C_SIZE ulp of max(size, |theta|), and within C_POINT ulp of |theta| itself where
 # |theta| >= 1e-3 size (between size/64 and size the error is a few ulp of the size, up to 64
-# ulp of |theta|); below, in II and III too (flow._direct evaluates theta near 0 again, for
+# ulp of |theta|); below, in II and III too (redo.direct evaluates theta near 0 again, for
 # full relative accuracy, in II; (28) is relatively accurate), but only recorded in IV (after
 # a turn, theta near 0 is N pi + 2 am, which cancels); theta' within C_SPEED ulp of 2 omega0 k,
 # and on the separatrix (where it decays like exp(-omega0 |t|)) within C_SPEED (2 + omega0 |t|)

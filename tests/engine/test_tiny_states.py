@@ -61,7 +61,7 @@ def _times(ex):
 
     In a tiny swing theta = theta0 cos(omega0 t) + (theta0' / omega0) sin(omega0 t), zero at
     omega0 t = -atan(theta0 omega0 / theta0'); 1/200 beside it flow evaluates theta again
-    from the phase (flow._direct), which the wrong branch had spoiled.
+    from the phase (redo.direct), which the wrong branch had spoiled.
     """
     scale = 1.0 / max(ex.omega0, ex.speed)
     ts = [0.0, -scale, 0.3 * scale, 2.5 * scale, 1e-20 * scale, -40.0 * scale]

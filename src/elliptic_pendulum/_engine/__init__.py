@@ -16,7 +16,10 @@ Modules, from the bottom up (the design note of the reference site gives the inv
 * :mod:`.jacobi` -- the edges of the Jacobi functions (k = 0, kc = 0, k > 1);
 * :mod:`.codes` -- the integer code of each regime;
 * :mod:`.classify` and :mod:`.farstates` -- initial states to regime, modulus and phase;
-* :mod:`.flow` -- theta(t) and theta'(t) from those parameters;
+* :mod:`.remainder` -- the phase's remainder in double-double, where theta crosses 0;
+* :mod:`.params` -- what the evaluation keeps per state;
+* :mod:`.flow` -- theta(t) and theta'(t) from those parameters, in chunks;
+* :mod:`.redo` -- theta near 0 evaluated again from the argument itself;
 * :mod:`.states` -- arrays of states, in chunks, to the parameters a Motion keeps.
 
 Each kernel has a twin on Python floats, ``<name>_float``, right below it in its module: the

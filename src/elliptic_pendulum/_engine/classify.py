@@ -58,6 +58,10 @@ class State(NamedTuple):
     rate_lo: np.ndarray    # its low part
     beta: np.ndarray       # c1 / (2 omega0^2) = 2 k^2 - 1, the note's beta of (29)
     beta_lo: np.ndarray    # its low part
+    s_lo: np.ndarray       # the low parts of s, c, w and k (double-doubles to about 1e-32)
+    c_lo: np.ndarray
+    w_lo: np.ndarray
+    k_lo: np.ndarray
 
 
 _TABLES = tuple(np.array(t) for t in (_dd.SIN_HI, _dd.SIN_LO, _dd.COS_HI, _dd.COS_LO))
@@ -199,8 +203,8 @@ def _near(th, v, w0):
     mod_c = (np.where(off, mod_c[0], 0.0), np.where(off, mod_c[1], 0.0))
     rate = (np.where(rot, rate[0], w0), np.where(rot, rate[1], 0.0))
     beta = _dd.add(*k2, -kc2[0], -kc2[1])                # k^2 - kc^2 = 2 k^2 - 1
-    k_out = np.where(moving, k[0], 0.0)
-    return State(code, turns, sh, ch, wh, k_out, *mod_c, *rate, *beta)
+    k_out, k_lo = np.where(moving, k[0], 0.0), np.where(moving, k[1], 0.0)
+    return State(code, turns, sh, ch, wh, k_out, *mod_c, *rate, *beta, sl, cl, wl, k_lo)
 
 
 def classify(theta0: np.ndarray, dtheta0: np.ndarray, omega0: np.ndarray) -> State:

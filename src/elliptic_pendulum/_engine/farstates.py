@@ -70,5 +70,6 @@ def classify(theta0: float, dtheta0: float, omega0: float) -> tuple:
         code = regimes.ROTATION
     # The elliptic modulus: alpha = k in II (14); gamma = 1/k in IV.
     mod_c, rate = (kc, w0) if kc2 >= 0 else (kc / k, w0 * k)
-    return (code, float(2 * ctx.pi * m), float(s), float(c), float(w), float(k),
-            *_split(mod_c), *_split(rate), *_split(2 * k2 - 1))
+    (s, s_lo), (c, c_lo), (w, w_lo), (k, k_lo) = (_split(x) for x in (s, c, w, k))
+    return (code, float(2 * ctx.pi * m), s, c, w, k, *_split(mod_c), *_split(rate),
+            *_split(2 * k2 - 1), s_lo, c_lo, w_lo, k_lo)

@@ -12,13 +12,16 @@ Every operation is elementwise: an element's value does not depend on the other 
 from __future__ import annotations
 
 import math
-from typing import Any, NamedTuple
+from typing import Any
 
 import numpy as np
 
 from . import landen as _landen
+from . import params as _params
+from . import redo as _redo
 from .codes import LIBRATION, ROTATION, SEPARATRIX
-from .landen import _PI_HI, _PI_LO, _two_prod, _two_sum
+from .landen import _two_prod
+from .params import Params
 
 __all__ = ["Params", "evaluate", "CHUNK"]
 
@@ -27,44 +30,16 @@ CHUNK = 2 ** 15
 _DEEP = 2.0 ** -300
 # Below this modulus (II), theta' is formed from s and w lifted by _LIFT (see _lifted).
 _SMALL_K, _LIFT = 2.0 ** -500, 2.0 ** 600
+# Below this |theta| a rotation's theta is evaluated again (see _kernel): pi / 64.
+_NEAR_ZERO = 0.049
 
 
-class Params(NamedTuple):
-    """Per-state arrays (one shape S), everything the evaluation needs."""
+def _kernel(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool, later=None):
+    """Return theta and theta' of one chunk.
 
-    code: np.ndarray
-    still: np.ndarray     # at rest (I) or balanced at the top (III): theta = theta0 forever
-    theta0: np.ndarray
-    turns: np.ndarray
-    omega0: np.ndarray
-    sigma: np.ndarray     # direction +-1 (III, IV); +1 otherwise
-    k: np.ndarray         # sqrt(s^2 + w^2): alpha (II), 1/gamma (IV)
-    s: np.ndarray         # sin(r/2), cos(r/2) and theta'/(2 omega0) of the initial state
-    c: np.ndarray
-    w: np.ndarray
-    rate: np.ndarray      # d(argument)/dt as a double-double; 0 outside II and IV
-    rate_lo: np.ndarray
-    quarters: np.ndarray  # the argument at t = 0 as quarters K + rem (|rem| <~ K/2), exactly
-    rem: np.ndarray
-    landen: _landen.Constants
-
-
-_N = len(Params._fields) - 1  # the per-state arrays before the Landen constants
-
-
-def _pieces(p: Params) -> list[Any]:
-    c = p.landen
-    return [*p[:_N], c.kc, c.quarter, c.k_hi, c.k_mid, c.k_lo, c.scale, c.scale_lo, *c.mu, *c.rho]
-
-
-def _unpieces(pieces: list[Any], levels: int) -> Params:
-    m = _N + _landen.SCALARS
-    c = _landen.Constants._make([*pieces[_N:m], tuple(pieces[m:m + levels]),
-                                 tuple(pieces[m + levels:])])
-    return Params._make([*pieces[:_N], c])
-
-
-def _kernel(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool):
+    With ``later`` (a list) the redo near theta = 0 is left to the caller: its points' mask
+    is appended, and their theta is not final.
+    """
     lib, rot = p.code == LIBRATION, p.code == ROTATION
     theta = dtheta = None
     t_all = t
@@ -115,12 +90,19 @@ def _kernel(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool):
                 redo = np.abs(lib_yx[0]) < lib_yx[2] * (1.0 / 64.0)
             if any_rot:
                 quarters, rest = am
-                th_r, small = _turned(p, quarters, rest + angle)
-                redo_r = np.abs(small) < (np.abs(rest) + np.abs(angle)) * (1.0 / 64.0)
+                th_r, small = _redo.turned(p, quarters, rest + angle)
+                # theta near 0: where the part beside N pi cancels, or where it cancels N pi
+                # itself (a rotation back to 0 from a quarter period away, N = +-1 or +-2:
+                # |theta| below pi/64 <= |N pi| / 64; at N = 0 the redo costs no accuracy).
+                redo_r = ((np.abs(small) < (np.abs(rest) + np.abs(angle)) * (1.0 / 64.0))
+                          | (np.abs(th_r) < _NEAR_ZERO))
                 theta = th_r if theta is None else np.where(rot, th_r, theta)
                 redo = redo_r if redo is None else np.where(rot, redo_r, redo)
         if want_theta and np.any(redo & (lib | rot)):
-            theta = _direct(p, t, (a, a_lo), redo & (lib | rot), theta)
+            if later is None:
+                theta = _redo.direct(p, t, redo & (lib | rot), theta)
+            else:
+                later.append(redo & (lib | rot))
     sep = (p.code == SEPARATRIX) & ~p.still
     if np.any(sep):
         with np.errstate(invalid="ignore", divide="ignore"):  # as above, for other regimes
@@ -222,57 +204,6 @@ def _rotation(p: Params, sn, cn, dn, want_theta: bool, want_dtheta: bool):
     return yx, dtheta
 
 
-def _turned(p: Params, quarters, rest):
-    """Theta = 2 pi m + sigma 2 (quarters pi/2 + rest) with the multiple of pi added exactly.
-
-    N pi (N = 2 m + sigma quarters) as a double-double, so that a theta near 0 after many
-    turns keeps its relative digits. Returns theta and its part beside N pi's double.
-    """
-    count = 2.0 * np.rint(p.turns / (2.0 * _PI_HI)) + p.sigma * quarters
-    big, err = _two_prod(count, _PI_HI)
-    small = (err + count * _PI_LO) + p.sigma * 2.0 * rest
-    return big + small, small
-
-
-def _turned_float(p, quarters, rest):
-    """Compute :func:`_turned` of one state on Python floats (its twin)."""
-    count = 2.0 * float(round(p.turns / (2.0 * _PI_HI))) + p.sigma * quarters
-    big, err = _two_prod(count, _PI_HI)
-    small = (err + count * _PI_LO) + p.sigma * 2.0 * rest
-    return big + small, small
-
-
-def _direct(p: Params, t, tau, redo, theta):
-    """Theta at the points ``redo`` from u = tau + rem + quarters K, reduced exactly.
-
-    Near theta = 0 (mod 2 pi) the addition theorem cancels; there the argument itself, with
-    the phase held as whole quarter periods plus an exact remainder, gives sn(u) (II) and
-    am(u) (IV) to full relative accuracy. Only these few points are evaluated again.
-    """
-    shape = theta.shape
-    mask = np.broadcast_to(redo, shape)
-    # Integer indices: gathering costs only as many as are redone (a 0-d mask indexes itself).
-    where = np.nonzero(mask) if mask.ndim else mask
-
-    def pick(x):
-        return np.broadcast_to(x, shape)[where]
-
-    c = p.landen
-    landen = _landen.Constants._make([*(pick(x) for x in c[:_landen.SCALARS]),
-                                      tuple(pick(x) for x in c.mu),
-                                      tuple(pick(x) for x in c.rho)])
-    u, u_lo = _two_sum(pick(tau[0]), pick(p.rem))
-    u_lo = u_lo + pick(tau[1] + p.rate_lo * t)
-    sn, _, dn, (quarters, rest) = _landen.evaluate(u, landen, u_lo, amplitude="split",
-                                                   name="t", quarters=pick(p.quarters))
-    sub = Params._make([*(pick(x) for x in p[:_N]), landen])
-    turned, _ = _turned(sub, quarters, rest)
-    direct = np.where(sub.code == LIBRATION, sub.turns + 2.0 * np.arctan2(sub.k * sn, dn), turned)
-    theta = np.array(theta)  # a writable copy (a 0-d result may be a numpy scalar)
-    theta[where] = direct
-    return theta
-
-
 def _separatrix(p: Params, t: np.ndarray):
     """(28) by the addition theorem from the initial state: exact at t = 0.
 
@@ -325,29 +256,47 @@ def _evaluate(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool):
         return (np.array(np.broadcast_to(theta, shape)) if want_theta else None,
                 np.array(np.broadcast_to(dtheta, shape)) if want_dtheta else None)
     nd = len(shape)
-    pieces = [np.reshape(x, (1,) * (nd - np.ndim(x)) + np.shape(x)) for x in _pieces(p)]
+    pieces = [np.reshape(x, (1,) * (nd - np.ndim(x)) + np.shape(x)) for x in _params.pieces(p)]
     t = np.reshape(t, (1,) * (nd - t.ndim) + t.shape)
     levels = len(p.landen.mu)
     outs = [np.empty(shape) if want else None for want in (want_theta, want_dtheta)]
     axis = next(a for a in range(nd) if math.prod(shape[a + 1:]) <= CHUNK)
     step = max(1, CHUNK // math.prod(shape[axis + 1:]))
+    # The redo near theta = 0 waits for the end: the remainder's low part is then made once
+    # for every state that needs it in any chunk (one call on all of them, not one per chunk:
+    # a state's many chunks share it, and a few hundred operations cost less on one array).
+    later: list = []
     for outer in np.ndindex(shape[:axis]):
         for start in range(0, shape[axis], step):
             # Slices only (an integer index would drop a dimension); a parameter of length 1
             # along a dimension broadcasts and is not cut.
             key = (*(slice(i, i + 1) for i in outer), slice(start, start + step))
-
-            def cut(x, key=key):
-                return x[tuple(k if n > 1 else slice(None)
-                               for k, n in zip(key, x.shape, strict=False))]
-
-            sub = _unpieces([cut(x) for x in pieces], levels)
-            theta, dtheta = _kernel(sub, cut(t), want_theta, want_dtheta)
+            sub = _params.unpieces([_cut(x, key) for x in pieces], levels)
+            masks: list = []
+            theta, dtheta = _kernel(sub, _cut(t, key), want_theta, want_dtheta, masks)
             for out, value in zip(outs, (theta, dtheta), strict=True):
                 if out is not None:
                     out[key] = value
+            later += [(key, mask) for mask in masks]
+    if later:
+        whole = _params.unpieces(pieces, levels)
+        need = np.zeros(np.shape(whole.code), dtype=bool)
+        for key, mask in later:
+            chunk = _cut(need, key)  # a view: the chunk's states in the whole
+            chunk |= _redo.need(_params.unpieces([_cut(x, key) for x in pieces], levels), mask)
+        low = _redo.lows(whole, need)
+        theta_out = outs[0]
+        assert theta_out is not None  # only theta is redone
+        for key, mask in later:
+            sub = _params.unpieces([_cut(x, key) for x in pieces], levels)
+            theta_out[key] = _redo.direct(sub, _cut(t, key), mask, theta_out[key],
+                                     _cut(low, key) if np.ndim(low) else low)
     return outs[0], outs[1]
 
+
+def _cut(x, key):
+    """Return x at the chunk ``key`` (slices); a dimension of length 1 broadcasts, uncut."""
+    return x[tuple(k if n > 1 else slice(None) for k, n in zip(key, x.shape, strict=False))]
 
 
 def state_float(p, t: float, want_theta: bool = True, want_dtheta: bool = True):
@@ -381,8 +330,9 @@ def state_float(p, t: float, want_theta: bool = True, want_dtheta: bool = True):
             x = cs * spread - sigma * s * sn * cn_l * dn * d0m1
             delta = _landen._f(np.arctan2, y, x)
             quarters, rest = am
-            theta, small = _turned_float(p, quarters, rest + delta)
-            redo = abs(small) < (abs(rest) + abs(delta)) * (1.0 / 64.0)
+            theta, small = _redo.turned_float(p, quarters, rest + delta)
+            redo = (abs(small) < (abs(rest) + abs(delta)) * (1.0 / 64.0)
+                    or abs(theta) < _NEAR_ZERO)  # as in _kernel
         if want_dtheta:
             s_k = s / k
             dn_u = ((d0_l * dn - sigma * s_k * (c_l / k) * sn * cn)
@@ -403,10 +353,5 @@ def state_float(p, t: float, want_theta: bool = True, want_dtheta: bool = True):
             dtheta = (2.0 * p.omega0 * (w_l * cn - s_l * cs * sn * dn)
                       / (cs * cs + s * s * cn * cn)) * back
     if want_theta and redo:
-        u, u_lo = _two_sum(a, p.rem)
-        u_lo = u_lo + (a_lo + p.rate_lo * t)
-        sn, _, dn, (quarters, rest) = _landen.evaluate_float(u, c, u_lo, amplitude="split",
-                                                             name="t", quarters=p.quarters)
-        theta = _turned_float(p, quarters, rest)[0] if rot else \
-            p.turns + 2.0 * _landen._f(np.arctan2, k * sn, dn)
+        theta = _redo.direct_float(p, t)
     return theta, dtheta

@@ -97,7 +97,8 @@ def _chunk(th, v, w0):
                          np.where(rot, math.inf, np.where(sep, math.pi, 0.0)))
     p = _flow.Params(code, still, th, st.turns, w0, sigma, np.where(elliptic, st.k, 1.0),
                      st.s, st.c, st.w, np.where(elliptic, st.rate, 0.0),
-                     np.where(elliptic, st.rate_lo, 0.0), quarters, rem, landen)
+                     np.where(elliptic, st.rate_lo, 0.0), quarters, rem, st.s_lo, st.c_lo,
+                     st.w_lo, st.k_lo, st.mod_c_lo, landen)
     public = [th, v, w0, c1, modulus, complement, amplitude, phase, sigma.astype(int),
               period, st.beta]
     return public, p
@@ -188,7 +189,7 @@ def solve_float(th: float, v: float, w0: float):
     public = [th, v, w0, c1, modulus, mod_c[0], amplitude, q * quarter + rem, int(sigma),
               period, beta[0]]
     params = (code, False, th, turns, w0, sigma, k[0], sh, ch, wh, rate[0], rate[1], q, rem,
-              landen)
+              sl, cl, wl, k[1], mod_c[1], landen)
     return public, params
 
 
