@@ -405,6 +405,12 @@ def test_the_japanese_notebook_is_the_english_one_in_japanese(
     for path_en, path_ja in zip(english, japanese, strict=True):
         en, ja = (nbformat.read(p, as_version=4) for p in (path_en, path_ja))
         page = path_en.name
+        # The Japanese notebook asks for its language in a code cell under the first
+        # (tools/classroom/export.py: language_cells); the rest is the English one's.
+        language = [c for c in ja.cells if c.metadata.get("classroom", {}).get("language")]
+        assert [ja.cells.index(c) for c in language] == [1], page
+        assert 'os.environ["LANGUAGE"] = "ja"' in language[0].source, page
+        ja.cells.remove(language[0])
         assert [c.cell_type for c in ja.cells] == [c.cell_type for c in en.cells], page
         for c_en, c_ja in zip(en.cells, ja.cells, strict=True):
             if c_en.cell_type == "code":  # the same code; only the answer cell's comment
