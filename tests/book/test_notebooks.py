@@ -583,11 +583,36 @@ def test_synthetic_book(tiny_sites: dict) -> None:
     assert '<a id="eq-7"></a>' in zeta and "#### Exercise 1" in zeta
 
 
-# The Japanese bundles: the same code as the English ones (tests/i18n/test_classroom_ja.py
+# The Japanese bundles: the same code as the English ones (tests/book/test_japanese.py
 # compares them cell by cell, and every English notebook ran above), so two chapters of
-# each run here, for what differs: the Japanese README's install command, and the
+# each run here, for what differs: the Japanese README's install command, the notebook's
+# language cell (its verdicts and figures in Japanese, from the catalog beside it), and the
 # self-checks answering in Japanese, as their cells ask (language='ja').
 JA_PAGES = ("energy", "libration")
+# The bar of the Japanese chapters (test_japanese.py), for a notebook's outputs.
+MOST_ENGLISH_RUNS = 20
+
+
+def _outputs(nb: nbformat.NotebookNode) -> tuple[list[str], set[str]]:
+    """What a notebook's code cells showed: the texts (HTML without its tags) and the
+    images (their digests)."""
+    import base64
+    import hashlib
+
+    texts, images = [], set()
+    for cell in nb.cells:
+        for out in cell.get("outputs", []):
+            texts.append(str(out.get("text", "")))
+            data = out.get("data", {})
+            for kind in ("text/markdown", "text/plain"):
+                texts.append(str(data.get(kind, "")))
+            texts.append(re.sub(r"<script.*?</script>|<[^>]+>", " ",
+                                str(data.get("text/html", "")), flags=re.S))
+            if "image/png" in data:
+                images.add(hashlib.sha256(base64.b64decode(data["image/png"])).hexdigest())
+            if "image/svg+xml" in data:
+                images.add(hashlib.sha256(str(data["image/svg+xml"]).encode()).hexdigest())
+    return texts, images
 
 
 @pytest.fixture(scope="session")
@@ -609,9 +634,11 @@ def ja_bundles(book_ja_build: Build, student_ja_build: Build,
 
 @pytest.mark.parametrize("edition", ex.EDITIONS)
 def test_the_japanese_bundle_installs_and_answers_in_japanese(
-    edition: str, ja_bundles: dict[str, Path], bundles: dict[str, Path], bundle_venv: Path
+    edition: str, ja_bundles: dict[str, Path], bundles: dict[str, Path], bundle_venv: Path,
+    executed: dict,
 ) -> None:
     from elliptic_pendulum.selfcheck import _ja
+    from tests.ja_text import english_runs
 
     folder = ja_bundles[edition]
     argv = readme_install(folder)
@@ -632,3 +659,13 @@ def test_the_japanese_bundle_installs_and_answers_in_japanese(
             else:  # the answer cell as handed out
                 assert "\u2714" not in text and still.strip() in text, (label, text)
             assert "All right" not in text and "is still" not in text, (label, text)
+        # Everything else it showed is Japanese too: the verdicts, the figures (not the
+        # English notebook's images, which ran above in the same venv).
+        texts, images = _outputs(nb)
+        runs = [r for text in texts for r in english_runs(text)]
+        english_images = _outputs(executed[page, edition])[1]
+        TIMES.append(f"Japanese {edition} {name}: {len(runs)} runs of English words in its "
+                     f"outputs, {len(images & english_images)} of {len(images)} images the "
+                     f"English notebook's")
+        assert len(runs) <= MOST_ENGLISH_RUNS, (name, runs)
+        assert images and not images & english_images, name
