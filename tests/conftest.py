@@ -136,7 +136,7 @@ def book_build(readme_runs: Runs) -> Build:
 
 @pytest.fixture(scope="session")
 def book_ja_build(readme_runs: Runs) -> Build:
-    """The Japanese edition, in the site's ja/ (`make book`): it executes nothing."""
+    """The Japanese edition, in the site's ja/ (`make book`): it runs its own cells, in Japanese."""
     return _build(readme_runs, "make book", "html", "book", "book/_build/html/ja")
 
 

@@ -2,7 +2,8 @@
 
 The English MyST pages are the only source of code, equations, figures and labels; a
 translation is ``book/locale/<lang>/LC_MESSAGES/<page>.po`` (``sphinx-build -D language=ja``;
-``make book-ja`` builds it into ``<site>/ja``, beside the English, reusing its execution cache).
+``make book-ja`` builds it into ``<site>/ja``, beside the English, running its cells in Japanese:
+book/_ext/kernels.py).
 What Sphinx, myst-parser and myst-nb do not do right for a translated notebook page is fixed
 here:
 
