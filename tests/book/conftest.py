@@ -114,15 +114,28 @@ def background() -> Iterator[ThreadPoolExecutor]:
 @pytest.fixture(scope="session")
 def pdf_job(background: ThreadPoolExecutor, readme_runs: Any) -> Future:
     """`make pdf` on the fresh copy (the README's command, in its turn): a Future of (the
-    build folder, what each print saw: tools/pdf/build.py's report.json)."""
+    build folder, what each print saw: tools/pdf/build.py's report.json, and each PDF's
+    text read back: tests/book/test_pdf.py's read_pdf).
+
+    pypdf reads the four PDFs as soon as they are printed, two at a time in processes of
+    their own (each a core's work for half a minute or more), not in the tier's tail."""
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+
+    from tests.book.test_pdf import read_pdf
     from tools.pdf import build as build_pdf
 
-    def job() -> tuple[Path, dict]:
+    def job() -> tuple[Path, dict, dict]:
         run = readme_runs.result("make pdf")
         assert run.returncode == 0, run.output[-5000:]
         out = readme_runs.copy / "book" / "_build"
         report = json.loads((out / "pdf" / build_pdf.REPORT).read_text(encoding="utf-8"))
-        return out, report
+        # Spawned, not forked: this process runs threads (the browsers' and the builds').
+        with ProcessPoolExecutor(max_workers=2,
+                                 mp_context=multiprocessing.get_context("spawn")) as pool:
+            read = dict(zip(report, pool.map(read_pdf, [out / "pdf" / f"{name}.pdf"
+                                                        for name in report]), strict=True))
+        return out, report, read
 
     return background.submit(job)
 

@@ -22,6 +22,7 @@ import subprocess
 from collections import Counter
 from concurrent.futures import Future
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 
 import pytest
@@ -116,19 +117,34 @@ def pdfs(pdf_job: Future, docs_build: Build) -> dict:
     if docs_build.returncode != 0:
         pytest.fail("the docs did not build (the book links to them)", pytrace=False)
     # Made beside the browser survey (tests/book/conftest.py), or now if it did not run.
-    out, report = pdf_job.result()
+    # Their text was read there too (read_pdf), as soon as they were printed.
+    out, report, read = pdf_job.result()
     print({k: {n: round(v, 1) if isinstance(v, float) else v for n, v in r.items()}
            for k, r in report.items()})
     from pypdf import PdfReader
 
-    texts, readers = {}, {}
-    for name in report:
-        reader = PdfReader(out / "pdf" / f"{name}.pdf")
-        pages = [p.extract_text() for p in reader.pages]
-        # Ligatures back to letters, so "ﬁrst" reads "first".
-        texts[name] = [p.replace("\ufb01", "fi").replace("\ufb02", "fl") for p in pages]
-        readers[name] = reader
-    return {"report": report, "texts": texts, "readers": readers}
+    return {"report": report, "texts": {name: read[name][0] for name in report},
+            "fonts": {name: read[name][1] for name in report},
+            "readers": {name: PdfReader(out / "pdf" / f"{name}.pdf") for name in report}}
+
+
+def read_pdf(path: Path) -> tuple[list[str], dict[str, str]]:
+    """The text of each page of a PDF, and the text drawn in each font (its base name
+    without the subset tag), from one reading of each page by pypdf (the slowest part of
+    this module's checks: the conftest's pdf_job runs it in processes of its own)."""
+    from pypdf import PdfReader
+
+    drawn: dict[str, list[str]] = {}
+
+    def visit(text: str, cm: Any, tm: Any, font: Any, size: Any) -> None:
+        if font is not None and text.strip():
+            name = str(font.get("/BaseFont", "")).lstrip("/").split("+")[-1]
+            drawn.setdefault(name, []).append(text)
+
+    pages = [page.extract_text(visitor_text=visit) for page in PdfReader(path).pages]
+    # Ligatures back to letters, so "ﬁrst" reads "first".
+    return ([p.replace("\ufb01", "fi").replace("\ufb02", "fl") for p in pages],
+            {name: "".join(texts) for name, texts in drawn.items()})
 
 
 def test_every_edition_is_printed(pdfs: dict) -> None:
@@ -152,18 +168,6 @@ def test_chapter_titles_are_text(pdfs: dict, editions: dict[str, Edition]) -> No
         assert missing == [], (name, missing)
 
 
-def _fonts(reader: Any) -> dict[str, str]:
-    """The text of a PDF drawn in each font (its base name without the subset tag)."""
-    drawn: dict[str, list[str]] = {}
-    for page in reader.pages:
-        def visit(text: str, cm: Any, tm: Any, font: Any, size: Any) -> None:
-            if font is not None and text.strip():
-                name = str(font.get("/BaseFont", "")).lstrip("/").split("+")[-1]
-                drawn.setdefault(name, []).append(text)
-        page.extract_text(visitor_text=visit)
-    return {name: "".join(texts) for name, texts in drawn.items()}
-
-
 def test_japanese_body_is_mincho_and_headings_gothic(
     pdfs: dict, editions: dict[str, Edition],
 ) -> None:
@@ -172,7 +176,7 @@ def test_japanese_body_is_mincho_and_headings_gothic(
     # default sans-serif (the Gothic, or a Noto face) and there is no Mincho at all.
     for name in ("book-ja", "book-student-ja"):
         edition = editions[name]
-        fonts = {f: edition.key(text) for f, text in _fonts(pdfs["readers"][name]).items()}
+        fonts = {f: edition.key(text) for f, text in pdfs["fonts"][name].items()}
         sizes = Counter({f: len(text) for f, text in fonts.items()})
         mincho = sum(n for f, n in sizes.items() if "Mincho" in f)
         assert mincho > 0.5 * sum(sizes.values()), (name, sizes.most_common(8))
@@ -180,7 +184,7 @@ def test_japanese_body_is_mincho_and_headings_gothic(
         plain = [t for t in edition.chapters if edition.key(t) not in gothic]
         assert plain == [], (name, plain, sizes.most_common(8))
     for name in ("book", "book-student"):  # (the note's Japanese title is in a Gothic)
-        fonts = _fonts(pdfs["readers"][name])
+        fonts = pdfs["fonts"][name]
         assert not any("Mincho" in f for f in fonts), (name, list(fonts))
 
 

@@ -408,7 +408,9 @@ def without_solutions(text: str) -> str:
 
 
 def _squash(text: str) -> str:
-    return re.sub(r"\s+", " ", text).strip()
+    # The same as re.sub(r"\s+", " ", text).strip() (str.split and re's \s split at the same
+    # Unicode whitespace), several times faster on a site's megabytes.
+    return " ".join(text.split())
 
 
 def snippets(lines: list[str]) -> set[str]:
@@ -484,7 +486,20 @@ def _strings(value) -> Iterator[str]:
 
 
 def scan_site(site: Path, wanted: dict[str, set[str]]) -> tuple[dict[str, list[str]], int]:
-    """(solution -> the files in which one of its snippets appears, files scanned)."""
+    """(solution -> the files in which one of its snippets appears, files scanned).
+
+    Every snippet is looked for in every text, but through a word index: a snippet is
+    squashed text of three words or more, so each of its inner words (the first and the
+    last may be the ends of longer words of the text) is a whole word of a squashed text
+    that holds it. A snippet is searched for in a text only when its inner words are all
+    words of the text: the others cannot hold it (a thousand snippets searched in every
+    file took minutes)."""
+    by_word: dict[str, list[tuple[str, str, list[str]]]] = {}
+    for solution, pieces in wanted.items():
+        for piece in pieces:
+            inner = piece.split(" ")[1:-1]
+            assert inner, f"a snippet of fewer than three words: {piece!r}"
+            by_word.setdefault(max(inner, key=len), []).append((solution, piece, inner))
     hits: dict[str, list[str]] = {}
     files = 0
     for path in sorted(site.rglob("*")):
@@ -494,8 +509,12 @@ def scan_site(site: Path, wanted: dict[str, set[str]]) -> tuple[dict[str, list[s
         name = path.relative_to(site).as_posix()
         for where, text in _texts(path, name, path.read_bytes()):
             text = _squash(text)
-            for solution, pieces in wanted.items():
-                if any(piece in text for piece in pieces):
+            words = set(text.split(" "))
+            found = {solution for word in by_word.keys() & words
+                     for solution, piece, inner in by_word[word]
+                     if all(w in words for w in inner) and piece in text}
+            for solution in wanted:
+                if solution in found:
                     hits.setdefault(solution, []).append(where)
     return hits, files
 
