@@ -56,17 +56,27 @@ def test_the_japanese_cell_sets_the_language_and_the_catalog_beside_it(tmp_path:
     assert verdict == "✔ (9) the energy is conserved。"
 
 
-def test_the_japanese_bundle_ships_the_book_catalog(tmp_path: Path) -> None:
+def test_the_japanese_bundle_ships_the_catalog_of_its_own_notebooks(tmp_path: Path) -> None:
+    # The book's catalog holds the texts of every cell, the solutions' too; a folder gets
+    # those its notebooks pass, and nothing else (a student's must hold no solution).
+    import nbformat
+    from babel.messages.pofile import read_po
+
+    with bundle.catalog_source("ja").open("rb") as f:
+        book = {m.id: m.string for m in read_po(f) if m.id}
+    shown, hidden = sorted(book)[:2]
+    cell = nbformat.v4.new_code_cell(f"verify.fact('(9)', True, {shown!r})")
     wheel = tmp_path / bundle.wheel_name()
     wheel.write_bytes(b"")
     for language in ("en", "ja"):
         folder = tmp_path / language
         folder.mkdir()
-        (folder / "01-intro.ipynb").write_text("{}", encoding="utf-8")
+        nbformat.write(nbformat.v4.new_notebook(cells=[cell]), folder / "01-intro.ipynb")
         written = bundle.write(folder, "student", wheel, language)
         assert ((folder / bundle.CATALOG) in written) == (language == "ja")
         archive = bundle.zip_edition(folder, "student", folder)
         names = zipfile.ZipFile(archive).namelist()
         assert any(n.endswith("/" + bundle.CATALOG) for n in names) == (language == "ja")
-    shipped = (tmp_path / "ja" / bundle.CATALOG).read_bytes()
-    assert shipped == bundle.catalog_source("ja").read_bytes()
+    with (tmp_path / "ja" / bundle.CATALOG).open("rb") as f:
+        shipped = {m.id: m.string for m in read_po(f) if m.id}
+    assert shipped == {shown: book[shown]} and hidden not in shipped

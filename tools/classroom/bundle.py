@@ -347,9 +347,36 @@ def write(folder: Path, edition: str, wheel: Path, language: str = "en") -> list
     (folder / README).write_text(text, encoding="utf-8")
     written = [folder / wheel.name, folder / REQUIREMENTS, folder / README]
     if language != "en":
-        shutil.copy2(catalog_source(language), folder / CATALOG)
+        write_catalog(folder, language)
         written.append(folder / CATALOG)
     return written
+
+
+def write_catalog(folder: Path, language: str) -> Path:
+    """Write the catalog of the texts that the folder's notebooks pass to the library.
+
+    Only their own: the book's catalog holds the texts of every cell, the solutions'
+    included, and a student's folder must not hold a solution in any file.
+    """
+    import nbformat
+    from babel.messages.pofile import read_po, write_po
+
+    from tools.i18n.library_texts import code_texts
+
+    wanted = {t.text for path in sorted(folder.glob("*.ipynb"))
+              for cell in nbformat.read(path, as_version=4).cells if cell.cell_type == "code"
+              for t in code_texts(cell.source) if t.literal}
+    with catalog_source(language).open("rb") as f:
+        book = read_po(f, locale=language)
+    for message in list(book):
+        if message.id and message.id not in wanted:
+            del book[message.id]
+        elif message.id:
+            message.locations = []  # the pages' lines mean nothing beside the notebooks
+    target = folder / CATALOG
+    with target.open("wb") as f:
+        write_po(f, book, width=0, omit_header=False)
+    return target
 
 
 def zip_edition(folder: Path, edition: str, zip_dir: Path) -> Path:

@@ -112,42 +112,48 @@ def _drawn(name: str, call: ast.Call) -> list[tuple[str, ast.AST]]:
     return carried
 
 
+def code_texts(code: str, page: str = "", first: int = 0) -> list[Text]:
+    """Return the texts one cell's ``code`` passes to the library (its lines from ``first``)."""
+    try:
+        tree = ast.parse(code)
+    except SyntaxError:
+        return []
+    figures = _figure_functions()
+    found = []
+    calls = sorted((n for n in ast.walk(tree) if isinstance(n, ast.Call)),
+                   key=lambda n: (n.lineno, n.col_offset))
+    for call in calls:
+        func = call.func
+        name = func.attr if isinstance(func, ast.Attribute) else getattr(func, "id", "")
+        owner = ast.unparse(func.value) if isinstance(func, ast.Attribute) else ""
+        carried: list[tuple[str, ast.AST]] = []
+        if owner == "verify" and name in _VERIFY:
+            positions, keywords = _VERIFY[name]
+            carried += [("claim", call.args[0])] if call.args else []
+            carried += [(name, call.args[i]) for i in positions if i < len(call.args)]
+            carried += [(k.arg, k.value) for k in call.keywords if k.arg in keywords]
+        elif name == "Identity":
+            carried += [(f"Identity {k.arg}", k.value) for k in call.keywords
+                        if k.arg in _STATEMENT]
+            carried += [("claim", call.args[1])] if len(call.args) > 1 else []
+        elif name in figures:
+            carried += [(f"{name} {k.arg}", k.value) for k in call.keywords
+                        if k.arg in _FIGURE]
+        else:
+            carried += _drawn(name, call)
+        for argument, node in carried:
+            for text, literal in _texts_of(node):
+                if _words(text):
+                    found.append(Text(text, page, first + call.lineno, argument, literal))
+    return found
+
+
 def texts(book: Path) -> list[Text]:
     """Return the texts the cells of the pages directly in ``book`` pass to the library."""
-    figures = _figure_functions()
     found = []
     for page in sorted(book.glob("*.md")):
         for first, code in _cells(page.read_text(encoding="utf-8")):
-            try:
-                tree = ast.parse(code)
-            except SyntaxError:
-                continue
-            calls = sorted((n for n in ast.walk(tree) if isinstance(n, ast.Call)),
-                           key=lambda n: (n.lineno, n.col_offset))
-            for call in calls:
-                func = call.func
-                name = func.attr if isinstance(func, ast.Attribute) else getattr(func, "id", "")
-                owner = ast.unparse(func.value) if isinstance(func, ast.Attribute) else ""
-                carried: list[tuple[str, ast.AST]] = []
-                if owner == "verify" and name in _VERIFY:
-                    positions, keywords = _VERIFY[name]
-                    carried += [("claim", call.args[0])] if call.args else []
-                    carried += [(name, call.args[i]) for i in positions if i < len(call.args)]
-                    carried += [(k.arg, k.value) for k in call.keywords if k.arg in keywords]
-                elif name == "Identity":
-                    carried += [(f"Identity {k.arg}", k.value) for k in call.keywords
-                                if k.arg in _STATEMENT]
-                    carried += [("claim", call.args[1])] if len(call.args) > 1 else []
-                elif name in figures:
-                    carried += [(f"{name} {k.arg}", k.value) for k in call.keywords
-                                if k.arg in _FIGURE]
-                else:
-                    carried += _drawn(name, call)
-                for argument, node in carried:
-                    for text, literal in _texts_of(node):
-                        if _words(text):
-                            found.append(Text(text, page.stem, first + call.lineno,
-                                              argument, literal))
+            found += code_texts(code, page.stem, first)
     return found
 
 
