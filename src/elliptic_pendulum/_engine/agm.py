@@ -10,7 +10,6 @@ modulus has a cached twin on Python floats, to the bit.
 
 from __future__ import annotations
 
-import math
 from functools import lru_cache
 from typing import Any, NamedTuple
 
@@ -24,8 +23,8 @@ from .dd import SPLIT as _SPLIT
 from .dd import fast_two_sum as _fast_two_sum
 from .levels import root, root_into, step, step_into
 
-__all__ = ["CHUNK", "SCALARS", "Constants", "complement", "constants", "constants_float",
-           "pad", "quarter_period"]
+__all__ = ["CHUNK", "COMPILED_FROM", "SCALARS", "Constants", "complement", "constants",
+           "constants_float", "pad", "quarter_period"]
 
 
 def _chop(x):
@@ -61,6 +60,10 @@ _NEAR = 1e-8
 # Arrays longer than this are done in pieces that stay in the processor's cache (a piece of
 # 2**14 doubles is 128 KiB): the double-double AGM runs about 2.5 times faster so.
 CHUNK = 2 ** 14
+#: Arrays from this size take the compiled loops of :mod:`.compiled` (the AGM here, the
+#: recurrence in :mod:`.landen`); smaller ones NumPy's passes, with the same bits. Below it a
+#: call does not import numba (about 0.3 s, and the compiled code from numba's cache).
+COMPILED_FROM = 2048
 
 
 def _constants(kc: Any, kc_lo: Any = 0.0) -> Constants:
@@ -150,16 +153,40 @@ def _piece(kc: Any, kc_lo: Any) -> Constants:
     M a_N rho_1 ... rho_(N-1) = kc (:func:`_last`; else the roundings of the levels add
     up in sn(u) ~ u: 4.7 ulp at u = 3e-8 on GSL's rows).
 
-    Elements that have stopped ride along with the others (their values are kept from
-    the level where they stopped) until at most half of the piece still iterates; then the
-    rest are gathered, so a few slow moduli cost only their own steps. Every element goes
-    through the same operations whatever its companions: the same bits alone or beside a
-    slower modulus (no dependence on the batch), and those of :func:`_constants_float`.
+    A piece of at least :data:`COMPILED_FROM` elements runs the AGM compiled
+    (:func:`.compiled.agm`), a smaller one as NumPy passes (:func:`_levels`). Every element
+    goes through the same operations whatever its companions and whichever the path: the
+    same bits alone or beside a slower modulus (no dependence on the batch), and those of
+    :func:`_constants_float`.
     """
     shape = kc.shape
     top = kc == 0  # the separatrix: K = inf; run the AGM on a harmless stand-in
     kc_lo = np.where(top, 0.0, kc_lo).ravel()
     kc = np.where(top, 1.0, kc).ravel()
+    if kc.size >= COMPILED_FROM:
+        from . import compiled  # numba's import only where it pays (see COMPILED_FROM)
+
+        mh, ml, mu_rows, rho_rows = compiled.agm(kc, kc_lo)
+        mu, rho = list(mu_rows), list(rho_rows)
+    else:
+        mh, ml, mu, rho = _levels(kc, kc_lo)
+    mu, rho = [x.reshape(shape) for x in mu], [x.reshape(shape) for x in rho]
+    kc, mh, ml = kc.reshape(shape), mh.reshape(shape), ml.reshape(shape)
+    quarter, k_hi, k_mid, k_lo = _ends.quarter_parts(mh, ml)
+    if np.any(top):
+        kc, quarter, k_hi = np.where(top, 0.0, kc), np.where(top, np.inf, quarter), \
+            np.where(top, np.inf, k_hi)
+        k_mid, k_lo = np.where(top, 0.0, k_mid), np.where(top, 0.0, k_lo)
+    return Constants(kc, quarter, k_hi, k_mid, k_lo, mh, ml, tuple(mu), tuple(rho))
+
+
+def _levels(kc, kc_lo):
+    """Run the AGM of :func:`_piece` on flat arrays as NumPy passes: M (mh, ml), mu, rho.
+
+    Elements that have stopped ride along with the others (their values are kept from
+    the level where they stopped) until at most half of the piece still iterates; then the
+    rest are gathered, so a few slow moduli cost only their own steps.
+    """
     size = kc.size
     bh, bl = _fast_two_sum(kc, kc_lo)
     ah, al = np.ones(size), np.zeros(size)
@@ -222,14 +249,7 @@ def _piece(kc: Any, kc_lo: Any) -> Constants:
     for n in range(first, len(mu)):  # each level array is the piece's own
         np.copyto(mu[n], last, where=stop <= n)
         np.copyto(rho[n], 1.0, where=stop <= n)
-    mu, rho = [x.reshape(shape) for x in mu], [x.reshape(shape) for x in rho]
-    kc, mh, ml = kc.reshape(shape), mh.reshape(shape), ml.reshape(shape)
-    quarter, k_hi, k_mid, k_lo = _ends.quarter_parts(mh, ml)
-    if np.any(top):
-        kc, quarter, k_hi = np.where(top, 0.0, kc), np.where(top, np.inf, quarter), \
-            np.where(top, np.inf, k_hi)
-        k_mid, k_lo = np.where(top, 0.0, k_mid), np.where(top, 0.0, k_lo)
-    return Constants(kc, quarter, k_hi, k_mid, k_lo, mh, ml, tuple(mu), tuple(rho))
+    return mh, ml, mu, rho
 
 
 @lru_cache(maxsize=256)
@@ -247,7 +267,7 @@ def _constants_float(kc: float, kc_lo: float) -> Constants:
             mu.append(_last(ph, pl, mh, ml, drift))
             rho.append(1.0)
             break
-        bh, bl, a1, a2, ratio, delta = root(ph, pl, ch, cl, math.sqrt)
+        bh, bl, a1, a2, ratio, delta = root(ph, pl, ch, cl)
         ah, al = ch, cl
         drift = drift + delta
         mu.append(ah)

@@ -59,7 +59,7 @@ def _kernel(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool, later
         # thousands of periods. The argument is u = u0 + tau with sn, cn, dn of u0 known
         # exactly from the initial state, joined to those of tau by the addition theorem:
         # at t = 0 the initial state itself comes back.
-        a, a_lo = _two_prod(p.rate, t)
+        a, a_lo = _product(p.rate, t)
         any_rot = bool(np.any(rot))
         sn, cn, dn, am = _landen.evaluate(a, p.landen, a_lo + p.rate_lo * t,
                                           amplitude="split" if any_rot else False, name="t")
@@ -116,6 +116,15 @@ def _kernel(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool, later
         theta = np.where(p.still, p.theta0, theta)
         dtheta = np.where(p.still, 0.0, dtheta)
     return theta, dtheta
+
+
+def _product(rate, t):
+    """Return rate t as a double-double (:func:`.dd.two_prod`), compiled for a large chunk."""
+    if np.size(t) * np.size(rate) >= _landen.COMPILED_FROM:
+        from . import compiled  # the same operations compiled (numba's import only here)
+
+        return compiled.two_prod(rate, t)
+    return _two_prod(rate, t)
 
 
 def _alone(p: Params, keep, s: float, c: float, w: float) -> Params:

@@ -31,6 +31,7 @@ import numpy as np
 
 from . import careful as _careful
 from .agm import (
+    COMPILED_FROM,
     SCALARS,
     Constants,
     _constants_float,
@@ -58,6 +59,10 @@ def reduce(u, c: Constants, u_lo=0.0, quarters=0.0, split=True):
     (the first two products are exact, the rest is rounded far below v's last bit); without
     ``split``, v alone (the same v) and v_lo None.
     """
+    if np.size(u) >= COMPILED_FROM:
+        from . import compiled  # the same operations compiled (numba's import only here)
+
+        return compiled.reduce(u, c, u_lo, quarters, split)
     n = np.rint(u / c.quarter)
     if split:
         v, v_lo = _two_sum((u - n * c.k_hi) - n * c.k_mid, u_lo - n * c.k_lo)
@@ -101,22 +106,13 @@ def core(v, c: Constants, v_lo=None):
         t = phase_tangent(v, v_lo, c.scale, c.scale_lo, np.tan)
     mu, rho = c.mu, c.rho
     cc = np.multiply(mu[-1], t, out=np.empty(np.broadcast_shapes(np.shape(mu[-1]), np.shape(t))))
-    # d = rho + (1 - rho) (r / (r + a_n)) for (r + b_n) / (r + a_n), in place (see below);
-    # the first step's cc = d cc with d = 1 is an identity, left out.
-    d: Any = 1.0
     r, x = np.empty(cc.shape), np.empty(cc.shape)
-    for n in range(len(mu) - 2, -1, -1):
-        np.multiply(cc, cc, out=r)
-        np.divide(r, mu[n + 1], out=r)
-        if n < len(mu) - 2:
-            np.multiply(d, cc, out=cc)
-        else:
-            d = np.empty(cc.shape)
-        np.add(r, mu[n], out=x)
-        np.divide(r, x, out=r)
-        np.subtract(1.0, rho[n], out=x)
-        np.multiply(x, r, out=x)
-        np.add(rho[n], x, out=d)
+    if cc.size >= COMPILED_FROM:
+        from . import compiled  # the same operations compiled (numba's import only here)
+
+        cc, d = compiled.recurrence(cc, mu, rho)
+    else:
+        d = _recurrence(cc, mu, rho, r, x)
     # Here cc = kc * sc(v) and d = kc / dn(v) (GSL's first branch). The operations are
     # those of the expressions, in their order; written into arrays made once, as a
     # piece's temporaries (2**14 doubles or more) would each be mapped afresh by glibc.
@@ -133,6 +129,28 @@ def core(v, c: Constants, v_lo=None):
         with np.errstate(over="ignore"):  # |v| > 710 only for |u| past exact reduction
             cc = np.where(tiny, c.kc * np.sinh(v), cc)
     return sn, cn, dn, cc
+
+
+def _recurrence(cc, mu, rho, r, x):
+    """Run the recurrence of :func:`core` as NumPy passes: cc in place, d returned.
+
+    d = rho + (1 - rho) (r / (r + a_n)) for (r + b_n) / (r + a_n), in place; r and x are
+    work arrays of cc's shape. The first step's cc = d cc with d = 1 is an identity, left out.
+    """
+    d: Any = 1.0
+    for n in range(len(mu) - 2, -1, -1):
+        np.multiply(cc, cc, out=r)
+        np.divide(r, mu[n + 1], out=r)
+        if n < len(mu) - 2:
+            np.multiply(d, cc, out=cc)
+        else:
+            d = np.empty(cc.shape)
+        np.add(r, mu[n], out=x)
+        np.divide(r, x, out=r)
+        np.subtract(1.0, rho[n], out=x)
+        np.multiply(x, r, out=x)
+        np.add(rho[n], x, out=d)
+    return d
 
 
 def evaluate(u, c: Constants, u_lo=0.0, amplitude: bool | str = False, name: str = "u",
