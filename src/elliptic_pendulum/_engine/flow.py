@@ -272,8 +272,9 @@ def _evaluate(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool):
     axis = next(a for a in range(nd) if math.prod(shape[a + 1:]) <= CHUNK)
     step = max(1, CHUNK // math.prod(shape[axis + 1:]))
     # The redo near theta = 0 waits for the end: the remainder's low part is then made once
-    # for every state that needs it in any chunk (one call on all of them, not one per chunk:
-    # a state's many chunks share it, and a few hundred operations cost less on one array).
+    # for every state that needs it in any chunk, and the points are evaluated again in one
+    # call (not one per chunk: a state's many chunks share its low part, and a few hundred
+    # operations cost less on one array).
     later: list = []
     for outer in np.ndindex(shape[:axis]):
         for start in range(0, shape[axis], step):
@@ -288,18 +289,13 @@ def _evaluate(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool):
                     out[key] = value
             later += [(key, mask) for mask in masks]
     if later:
+        # The points of every chunk are redone together, in one call over the whole result.
         whole = _params.unpieces(pieces, levels)
-        need = np.zeros(np.shape(whole.code), dtype=bool)
+        redo = np.zeros(shape, dtype=bool)
         for key, mask in later:
-            chunk = _cut(need, key)  # a view: the chunk's states in the whole
-            chunk |= _redo.need(_params.unpieces([_cut(x, key) for x in pieces], levels), mask)
-        low = _redo.lows(whole, need)
-        theta_out = outs[0]
-        assert theta_out is not None  # only theta is redone
-        for key, mask in later:
-            sub = _params.unpieces([_cut(x, key) for x in pieces], levels)
-            theta_out[key] = _redo.direct(sub, _cut(t, key), mask, theta_out[key],
-                                     _cut(low, key) if np.ndim(low) else low)
+            redo[key] = mask
+        low = _redo.lows(whole, _redo.need(whole, redo))
+        outs[0] = _redo.direct(whole, t, redo, outs[0], low)
     return outs[0], outs[1]
 
 
