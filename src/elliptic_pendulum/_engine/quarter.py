@@ -35,7 +35,7 @@ def complete(m1: Any, kc: Any) -> Any:
     kc = np.asarray(kc, dtype=float)
     small = kc < _SMALL
     with np.errstate(divide="ignore", under="ignore"):  # kc = 0: log 0 = -inf, K = inf
+        if not np.any(small):  # the usual case: one ellipkm1 pass, no stand-ins to place
+            return special.ellipkm1(m1)
         quarter = special.ellipkm1(np.where(small, 1.0, m1))
-        if np.any(small):
-            quarter = np.where(small, _LOG4 - np.log(kc), quarter)
-    return quarter
+        return np.where(small, _LOG4 - np.log(kc), quarter)
