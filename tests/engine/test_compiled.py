@@ -14,6 +14,7 @@ multiply-add, or took another branch would fail here by at least one bit.
 
 from __future__ import annotations
 
+import os
 import subprocess
 import sys
 
@@ -158,3 +159,34 @@ def test_numba_is_imported_only_for_large_arrays():
     out = subprocess.run([sys.executable, "-W", "error", "-c", code], capture_output=True,
                          text=True, check=True).stdout.split()
     assert out == ["False", "True"]
+
+
+_RUN = """
+import hashlib, numpy as np, elliptic_pendulum as ep
+rng = np.random.default_rng(5)
+theta0, dtheta0 = rng.uniform(-3, 3, (3000, 1)), rng.uniform(-2, 2, (3000, 1))
+theta = ep.solve(theta0, dtheta0).theta(np.linspace(0, 10, 7)[None, :])
+sn = ep.sn(rng.uniform(-5, 5, 5000), rng.uniform(0, 1, 5000))
+print(hashlib.sha256(theta.tobytes() + sn.tobytes()).hexdigest())
+"""
+
+
+@pytest.mark.slow
+def test_processes_that_compile_at_once_leave_a_cache_the_next_ones_load(tmp_path):
+    """Three processes compile into one empty numba cache at once; two more load it.
+
+    Without the lock of compiled._one_at_a_time, numba's cache written by processes at once
+    crashed a later process (a segmentation fault) in about one trial of three here; with
+    it, every process finishes and all agree with one another to the bit.
+    """
+    env = {**os.environ, "NUMBA_CACHE_DIR": str(tmp_path)}
+    command = [sys.executable, "-W", "error", "-c", _RUN]
+    together = [subprocess.Popen(command, env=env, stdout=subprocess.PIPE, text=True)
+                for _ in range(3)]
+    outs = [p.communicate()[0] for p in together]
+    assert [p.returncode for p in together] == [0, 0, 0]
+    assert any(tmp_path.rglob("*.nbc"))  # the cache was written where we said
+    for _ in range(2):
+        outs.append(subprocess.run(command, env=env, capture_output=True, text=True,
+                                   check=True).stdout)
+    assert len(set(outs)) == 1
