@@ -275,7 +275,7 @@ def _evaluate(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool):
     # for every state that needs it in any chunk, and the points are evaluated again in one
     # call (not one per chunk: a state's many chunks share its low part, and a few hundred
     # operations cost less on one array).
-    later: list = []
+    redo = None  # where theta is evaluated again, over the whole result (made when needed)
     for outer in np.ndindex(shape[:axis]):
         for start in range(0, shape[axis], step):
             # Slices only (an integer index would drop a dimension); a parameter of length 1
@@ -287,15 +287,16 @@ def _evaluate(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool):
             for out, value in zip(outs, (theta, dtheta), strict=True):
                 if out is not None:
                     out[key] = value
-            later += [(key, mask) for mask in masks]
-    if later:
+            for mask in masks:
+                if redo is None:
+                    redo = np.zeros(shape, dtype=bool)
+                redo[key] = mask
+    if redo is not None:
         # The points of every chunk are redone together, in one call over the whole result.
         whole = _params.unpieces(pieces, levels)
-        redo = np.zeros(shape, dtype=bool)
-        for key, mask in later:
-            redo[key] = mask
         low = _redo.lows(whole, _redo.need(whole, redo))
-        outs[0] = _redo.direct(whole, t, redo, outs[0], low)
+        # in place: a copy of the whole result would double the memory of a long t
+        _redo.direct(whole, t, redo, outs[0], low, in_place=True)
     return outs[0], outs[1]
 
 

@@ -44,13 +44,14 @@ def turned_float(p, quarters, rest):
     return big + small, small
 
 
-def direct(p: Params, t, redo, theta, low=None):
+def direct(p: Params, t, redo, theta, low=None, in_place=False):
     """Theta at the points ``redo`` from u = tau + rem + quarters K, reduced exactly.
 
     Near theta = 0 (mod 2 pi) the addition theorem cancels; there the argument itself, with
     the phase held as whole quarter periods plus an exact remainder, gives sn(u) (II) and
     am(u) (IV) to full relative accuracy. Only these few points are evaluated again. ``low``
-    is the remainder's low part per state (:func:`lows`), made here if not given.
+    is the remainder's low part per state (:func:`lows`), made here if not given. With
+    ``in_place`` theta (a writable array of the result's shape) is written into and returned.
     """
     shape = theta.shape
     mask = np.broadcast_to(redo, shape)
@@ -77,7 +78,8 @@ def direct(p: Params, t, redo, theta, low=None):
     th_turned, _ = turned(sub, quarters, rest)
     again = np.where(sub.code == LIBRATION, sub.turns + 2.0 * np.arctan2(sub.k * sn, dn),
                      th_turned)
-    theta = np.array(theta)  # a writable copy (a 0-d result may be a numpy scalar)
+    if not in_place:
+        theta = np.array(theta)  # a writable copy (a 0-d result may be a numpy scalar)
     theta[where] = again
     return theta
 
