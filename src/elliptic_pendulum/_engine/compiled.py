@@ -1,10 +1,11 @@
-"""The engine's two loops over levels, compiled: the AGM of many moduli, the Landen recurrence.
+"""The engine's loops over many elements, compiled: the AGM, the recurrence, the reduction.
 
 Written as NumPy passes, one level of the double-double AGM is about ninety passes over
 the array (:mod:`.levels`) and one step of the recurrence seven: most of the time of sn on
 many moduli, and of a motion's theta(t) on many states, went there. numba compiles each
 loop into one pass per level, whose body runs in the processor's vector registers (about
-four times faster on the AGM, measured in ``benchmarks/bench_engine.py``).
+four times faster on the AGM, measured in ``benchmarks/bench_engine.py``); the reduction by
+quarter periods and the exact product rate t are compiled too, as generalized ufuncs.
 
 The bits are those of the NumPy path and of the scalar twins: the loops call the Python
 functions of :mod:`.levels`, :mod:`.agm` and :mod:`.dd` themselves (compiled from their
@@ -252,7 +253,10 @@ def agm(kc, kc_lo):
 
 
 def recurrence(cc, mu, rho):
-    """Run the loop of :func:`.landen.core`: cc = kc sc(v), d = kc / dn(v) from cc = a_N tan."""
+    """Run the loop of :func:`.landen.core`: cc = kc sc(v), d = kc / dn(v) from cc = a_N tan.
+
+    cc (a contiguous array of the caller's own) is overwritten and returned.
+    """
     shape = cc.shape
     levels = len(mu)
     table = np.stack(np.broadcast_arrays(*mu, *rho))
@@ -269,7 +273,7 @@ def recurrence(cc, mu, rho):
     else:
         table = np.broadcast_to(table.reshape(2 * levels, *given), (2 * levels, *shape))
         table, inner = np.ascontiguousarray(table).reshape(2 * levels, -1), 1
-    out = np.array(cc, dtype=float).reshape(-1, inner)
+    out = np.ascontiguousarray(cc, dtype=float).reshape(-1, inner)  # core's own: in place
     d = _recurrence_loop(out, table[:levels], table[levels:])
     return out.reshape(shape), d.reshape(shape)
 
