@@ -1,8 +1,9 @@
 """The compiled loops (numba) give the bits of the NumPy passes and of the scalar twins.
 
-An array of at least ``agm.COMPILED_FROM`` elements takes the compiled AGM, reduction,
-product and Landen recurrence of ``_engine/compiled.py``; a smaller one NumPy's passes, and
-one number the Python-float twins. The library promises that a value never depends on the
+Once a call on ``agm.LOAD_FROM`` elements has loaded them, every piece of at least
+``agm.COMPILED_FROM`` elements takes the compiled AGM, reduction, product and Landen
+recurrence of ``_engine/compiled.py``; a smaller one NumPy's passes, and one number the
+Python-float twins. The library promises that a value never depends on the
 other elements of its array, so an element must come out to the bit the same alone, in a
 small array and in a large one. The expectations here are the library's other two paths,
 which share no loop with the compiled one: NumPy's ufuncs (``agm._levels``,
@@ -25,7 +26,27 @@ import elliptic_pendulum as ep
 from elliptic_pendulum._engine import agm, landen
 from tests.strict import quietly
 
-BIG = agm.COMPILED_FROM + 905  # compiled, and not a multiple of anything
+BIG = agm.COMPILED_FROM + 905  # compiled once loaded, and not a multiple of anything
+
+
+@pytest.fixture(autouse=True)
+def spy(monkeypatch):
+    """Load the compiled loops (as a large call does), and count the calls of each."""
+    from elliptic_pendulum._engine import compiled
+
+    calls: dict[str, int] = {}
+
+    def counted(name):
+        original = getattr(compiled, name)
+
+        def wrapper(*args, **kwargs):
+            calls[name] = calls.get(name, 0) + 1
+            return original(*args, **kwargs)
+        return wrapper
+
+    for name in ("agm", "recurrence", "reduce", "two_prod"):
+        monkeypatch.setattr(compiled, name, counted(name))
+    return calls
 
 
 def _bits(x):
@@ -51,12 +72,12 @@ def _moduli(rng):
     return (np.concatenate([kc, tiny]), np.concatenate([kc_lo, np.zeros(tiny.size)]))
 
 
-def test_the_compiled_agm_gives_the_bits_of_numpy_and_of_the_float_twin():
+def test_the_compiled_agm_gives_the_bits_of_numpy_and_of_the_float_twin(spy):
     rng = np.random.default_rng(20261204)
     kc, kc_lo = _moduli(rng)
     assert kc.size >= agm.COMPILED_FROM
     big = agm.constants(kc, kc_lo)                      # compiled
-    assert "elliptic_pendulum._engine.compiled" in sys.modules
+    assert spy == {"agm": 1}
     levels = len(big.mu)
     for start in range(0, kc.size, 1000):               # NumPy's passes, 1000 at a time
         part = slice(start, start + 1000)
@@ -77,13 +98,14 @@ def test_the_compiled_agm_gives_the_bits_of_numpy_and_of_the_float_twin():
 
 
 @pytest.mark.parametrize("function", [ep.sn, ep.cn, ep.dn, ep.am])
-def test_jacobi_functions_of_many_moduli_do_not_depend_on_the_array(function):
+def test_jacobi_functions_of_many_moduli_do_not_depend_on_the_array(function, spy):
     rng = np.random.default_rng(7)
     k = np.concatenate([rng.uniform(0.0, 1.0, BIG), 1.0 - rng.uniform(0.0, 1e-9, 50),
                         rng.uniform(1.0, 30.0, 50), [0.0, 1.0, 0.998, 0.0625]])
     u = np.concatenate([rng.uniform(-10.0, 10.0, k.size - 100),
                         rng.uniform(-1e4, 1e4, 100)])
     whole = quietly(function, u, k)
+    assert {"agm", "recurrence", "reduce"} <= set(spy)
     pieces = np.concatenate([function(u[i:i + 700], k[i:i + 700])
                              for i in range(0, k.size, 700)])
     _same(whole, pieces)
@@ -95,7 +117,7 @@ def test_jacobi_functions_of_many_moduli_do_not_depend_on_the_array(function):
 
 
 @pytest.mark.parametrize("times_shape", [(1, 7), (7,)], ids=["states-by-times", "one-time"])
-def test_an_ensemble_does_not_depend_on_its_companions(times_shape):
+def test_an_ensemble_does_not_depend_on_its_companions(times_shape, spy):
     """States (N, 1) at times (1, T): the levels broadcast; and N states at one time each."""
     rng = np.random.default_rng(11)
     n = BIG
@@ -112,6 +134,7 @@ def test_an_ensemble_does_not_depend_on_its_companions(times_shape):
     theta = quietly(motion.theta, t)
     dtheta = motion.dtheta(t)
     assert theta.size >= agm.COMPILED_FROM
+    assert {"agm", "recurrence", "reduce", "two_prod"} <= set(spy)
     for i in rng.choice(n, 40, replace=False):
         one = ep.solve(float(np.ravel(theta0)[i]), float(np.ravel(dtheta0)[i]))
         t_i = t[0] if times_shape == (1, 7) else t[i]
@@ -124,10 +147,12 @@ def test_an_ensemble_does_not_depend_on_its_companions(times_shape):
     _same(theta[part], small.theta(t_part))
 
 
-def test_one_state_at_many_times_is_the_same_in_pieces():
+def test_one_state_at_many_times_is_the_same_in_pieces(spy):
     motion = ep.solve(2.9, 0.1)
     t = np.linspace(-1e4, 1e4, 3 * agm.COMPILED_FROM)
-    _same(motion.theta(t), np.concatenate([motion.theta(t[i:i + 1000])
+    theta = motion.theta(t)
+    assert spy["recurrence"] >= 1 and spy["two_prod"] >= 1
+    _same(theta, np.concatenate([motion.theta(t[i:i + 1000])
                                            for i in range(0, t.size, 1000)]))
 
 
@@ -147,24 +172,42 @@ def test_the_recurrence_lays_out_levels_of_any_shape():
     _same(d_compiled, d_numpy)
 
 
-def test_numba_is_imported_only_for_large_arrays():
-    """A scalar call, the CLI's path, or a small array does not pay for numba's import."""
-    code = ("import sys, numpy as np, elliptic_pendulum as ep\n"
-            "ep.sn(np.linspace(0, 1, 100), np.linspace(0, 0.9, 100))\n"
-            "ep.solve(np.linspace(0, 1, 100)[:, None], 0.5).theta(np.linspace(0, 5, 10))\n"
-            "ep.solve(1.0, 0.2).theta(3.0)\n"
-            "print('numba' in sys.modules)\n"
-            f"ep.sn(np.linspace(0, 1, {BIG}), np.linspace(0, 0.9, {BIG}))\n"
-            "print('numba' in sys.modules)\n")
+_LOADS = """
+import sys, numpy as np, elliptic_pendulum as ep
+def loaded():
+    print('numba' in sys.modules)
+ep.sn(np.linspace(0, 1, 100), np.linspace(0, 0.9, 100))
+ep.solve(1.0, 0.2).theta(3.0)
+loaded()
+n = {lesson}  # a lesson's grid: many moduli, many states, one state at many times
+ep.sn(np.linspace(0, 1, n), np.linspace(0, 0.9, n))
+ep.solve(np.linspace(0, 3, n), 0.5).theta(1.0)
+ep.solve(2.0, 0.5).theta(np.linspace(0, 5, n))
+ep.complete_integral(np.linspace(0, 0.99, n))
+loaded()
+{large}
+loaded()
+"""
+
+
+@pytest.mark.parametrize("large", [
+    "ep.sn(np.linspace(0, 1, {n}), np.linspace(0, 0.9, {n}))",
+    "ep.solve(np.linspace(0, 3, {n}), 0.5)",
+    "ep.solve(2.0, 0.5).theta(np.linspace(0, 5, {n}))",
+], ids=["many-moduli", "many-states", "many-times"])
+def test_numba_is_loaded_only_by_a_large_call(large):
+    """A scalar call, the CLI's path, or a lesson's arrays do not pay for numba's import
+    (agm.LOAD_FROM); each kind of large call loads it."""
+    code = _LOADS.format(lesson=20001, large=large.format(n=agm.LOAD_FROM))
     out = subprocess.run([sys.executable, "-W", "error", "-c", code], capture_output=True,
                          text=True, check=True).stdout.split()
-    assert out == ["False", "True"]
+    assert out == ["False", "False", "True"]
 
 
-_RUN = """
+_RUN = f"""
 import hashlib, numpy as np, elliptic_pendulum as ep
 rng = np.random.default_rng(5)
-theta0, dtheta0 = rng.uniform(-3, 3, (3000, 1)), rng.uniform(-2, 2, (3000, 1))
+theta0, dtheta0 = rng.uniform(-3, 3, ({agm.LOAD_FROM}, 1)), rng.uniform(-2, 2, ({agm.LOAD_FROM}, 1))
 theta = ep.solve(theta0, dtheta0).theta(np.linspace(0, 10, 7)[None, :])
 sn = ep.sn(rng.uniform(-5, 5, 5000), rng.uniform(0, 1, 5000))
 print(hashlib.sha256(theta.tobytes() + sn.tobytes()).hexdigest())

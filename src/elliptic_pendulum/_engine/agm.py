@@ -10,6 +10,8 @@ modulus has a cached twin on Python floats, to the bit.
 
 from __future__ import annotations
 
+import importlib
+import sys
 from functools import lru_cache
 from typing import Any, NamedTuple
 
@@ -23,8 +25,8 @@ from .dd import SPLIT as _SPLIT
 from .dd import fast_two_sum as _fast_two_sum
 from .levels import root, root_into, step, step_into
 
-__all__ = ["CHUNK", "COMPILED_FROM", "SCALARS", "Constants", "complement", "constants",
-           "constants_float", "pad", "quarter_period"]
+__all__ = ["CHUNK", "COMPILED_FROM", "LOAD_FROM", "SCALARS", "Constants", "compiled_for",
+           "complement", "constants", "constants_float", "load_compiled", "pad", "quarter_period"]
 
 
 def _chop(x):
@@ -60,10 +62,28 @@ _NEAR = 1e-8
 # Arrays longer than this are done in pieces that stay in the processor's cache (a piece of
 # 2**14 doubles is 128 KiB): the double-double AGM runs about 2.5 times faster so.
 CHUNK = 2 ** 14
-#: Arrays from this size take the compiled loops of :mod:`.compiled` (the AGM here, the
-#: recurrence in :mod:`.landen`); smaller ones NumPy's passes, with the same bits. Below it a
-#: call does not import numba (about 0.3 s, and the compiled code from numba's cache).
+#: A piece of this many elements runs the compiled loops of :mod:`.compiled` (the AGM here,
+#: the recurrence and the reduction in :mod:`.landen`, the product in :mod:`.flow`) once that
+#: module is loaded; a smaller one NumPy's passes, with the same bits.
 COMPILED_FROM = 2048
+#: A call on this many elements loads :mod:`.compiled`, and numba with it. The first process
+#: after an install compiles (about 7.5 s on the 2-core test machine) and every later one
+#: loads the machine code (0.35 s), while a call on 4096 points gains about 1 ms, on 65536
+#: points 3 to 15 ms: so the plots and grids of a lesson (up to some 20000 points) never wait
+#: for numba, and a large computation, or any piece after it, runs compiled.
+LOAD_FROM = 2 ** 16
+_COMPILED = f"{__package__}.compiled"
+
+
+def load_compiled(size: int) -> None:
+    """Load the compiled loops for a call on ``size`` elements, if it is that large."""
+    if size >= LOAD_FROM and _COMPILED not in sys.modules:
+        importlib.import_module(_COMPILED)
+
+
+def compiled_for(size: int) -> Any:
+    """Return :mod:`.compiled` if a piece of ``size`` elements is to run it, else None."""
+    return sys.modules.get(_COMPILED) if size >= COMPILED_FROM else None
 
 
 def _constants(kc: Any, kc_lo: Any = 0.0) -> Constants:
@@ -73,6 +93,7 @@ def _constants(kc: Any, kc_lo: Any = 0.0) -> Constants:
     kc = np.broadcast_to(kc, kc_lo.shape)
     if kc.size <= CHUNK:
         return _piece(kc, kc_lo)
+    load_compiled(kc.size)
     shape = kc.shape
     flat, flat_lo = kc.ravel(), kc_lo.ravel()
     parts = [_piece(flat[i:i + CHUNK], flat_lo[i:i + CHUNK])
@@ -154,7 +175,8 @@ def _piece(kc: Any, kc_lo: Any) -> Constants:
     up in sn(u) ~ u: 4.7 ulp at u = 3e-8 on GSL's rows).
 
     A piece of at least :data:`COMPILED_FROM` elements runs the AGM compiled
-    (:func:`.compiled.agm`), a smaller one as NumPy passes (:func:`_levels`). Every element
+    (:func:`.compiled.agm`) once a large call has loaded it, a smaller one as NumPy passes
+    (:func:`_levels`). Every element
     goes through the same operations whatever its companions and whichever the path: the
     same bits alone or beside a slower modulus (no dependence on the batch), and those of
     :func:`_constants_float`.
@@ -163,9 +185,8 @@ def _piece(kc: Any, kc_lo: Any) -> Constants:
     top = kc == 0  # the separatrix: K = inf; run the AGM on a harmless stand-in
     kc_lo = np.where(top, 0.0, kc_lo).ravel()
     kc = np.where(top, 1.0, kc).ravel()
-    if kc.size >= COMPILED_FROM:
-        from . import compiled  # numba's import only where it pays (see COMPILED_FROM)
-
+    compiled = compiled_for(kc.size)
+    if compiled is not None:
         mh, ml, mu_rows, rho_rows = compiled.agm(kc, kc_lo)
         mu, rho = list(mu_rows), list(rho_rows)
     else:

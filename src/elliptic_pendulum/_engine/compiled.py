@@ -16,9 +16,11 @@ sqrt are here; tan, hypot and arctan2 stay NumPy's, whose SIMD loops may round o
 than the C library that compiled code would call. ``error_model="numpy"`` makes a division
 the IEEE one (Python's checks for zero first, a branch that stops the vectorizer).
 
-This module imports numba (about 0.3 s, and the compiled code from numba's cache), so the
-engine imports it only for an array of at least :data:`.agm.COMPILED_FROM` elements: a
-scalar call, the CLI, or a small array never pays for it. Every loop is compiled at import,
+This module imports numba (0.35 s with the machine code from numba's cache; the first
+time, compiling, about 7.5 s), so the engine loads it only for a call on at least
+:data:`.agm.LOAD_FROM` elements (:func:`.agm.load_compiled`); from then on every piece of at
+least :data:`.agm.COMPILED_FROM` runs here. A scalar call, the CLI, or the arrays of a lesson
+never pay for it. Every loop is compiled at import,
 for its one signature, under a lock file (:func:`_one_at_a_time`): numba's cache written by
 two processes at once crashed the next process that loaded it.
 """

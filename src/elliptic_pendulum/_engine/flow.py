@@ -120,9 +120,8 @@ def _kernel(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool, later
 
 def _product(rate, t):
     """Return rate t as a double-double (:func:`.dd.two_prod`), compiled for a large chunk."""
-    if np.size(t) * np.size(rate) >= _landen.COMPILED_FROM:
-        from . import compiled  # the same operations compiled (numba's import only here)
-
+    compiled = _landen.compiled_for(np.size(t) * np.size(rate))
+    if compiled is not None:  # the same operations compiled
         return compiled.two_prod(rate, t)
     return _two_prod(rate, t)
 
@@ -264,6 +263,7 @@ def _evaluate(p: Params, t: np.ndarray, want_theta: bool, want_dtheta: bool):
         # (the scalar path, and theta0 = -0.0 at rest, keep the sign).
         return (np.array(np.broadcast_to(theta, shape)) if want_theta else None,
                 np.array(np.broadcast_to(dtheta, shape)) if want_dtheta else None)
+    _landen.load_compiled(size)
     nd = len(shape)
     pieces = [np.reshape(x, (1,) * (nd - np.ndim(x)) + np.shape(x)) for x in _params.pieces(p)]
     t = np.reshape(t, (1,) * (nd - t.ndim) + t.shape)

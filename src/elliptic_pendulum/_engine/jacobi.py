@@ -118,6 +118,7 @@ def values_of_moduli(u, k, amplitude=False):
     size = math.prod(shape)
     if size <= CHUNK:
         return values(u, k, *_landen.complement(np.minimum(k, 1.0)), amplitude)
+    _landen.load_compiled(size)
     flat_u = np.broadcast_to(u, shape).ravel()
     count = 4 if amplitude else 3
     if k.ndim == 0:  # one modulus: its kc once, and u in pieces

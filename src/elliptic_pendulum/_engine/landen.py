@@ -31,13 +31,14 @@ import numpy as np
 
 from . import careful as _careful
 from .agm import (
-    COMPILED_FROM,
     SCALARS,
     Constants,
     _constants_float,
+    compiled_for,
     complement,
     constants,
     constants_float,
+    load_compiled,
     quarter_period,
 )
 from .dd import PI_HI as _PI_HI
@@ -45,9 +46,9 @@ from .dd import PI_LO as _PI_LO
 from .dd import two_prod as _two_prod
 from .dd import two_sum as _two_sum
 
-__all__ = ["SCALARS", "Constants", "complement", "constants", "constants_float", "core",
-           "evaluate", "quarter_period", "reduce", "sech", "gudermannian", "_PI_HI", "_PI_LO",
-           "_constants_float", "_two_prod", "_two_sum"]
+__all__ = ["SCALARS", "Constants", "compiled_for", "complement", "constants", "constants_float",
+           "core", "evaluate", "load_compiled", "quarter_period", "reduce", "sech",
+           "gudermannian", "_PI_HI", "_PI_LO", "_constants_float", "_two_prod", "_two_sum"]
 
 
 def reduce(u, c: Constants, u_lo=0.0, quarters=0.0, split=True):
@@ -59,9 +60,8 @@ def reduce(u, c: Constants, u_lo=0.0, quarters=0.0, split=True):
     (the first two products are exact, the rest is rounded far below v's last bit); without
     ``split``, v alone (the same v) and v_lo None.
     """
-    if np.size(u) >= COMPILED_FROM:
-        from . import compiled  # the same operations compiled (numba's import only here)
-
+    compiled = compiled_for(np.size(u))
+    if compiled is not None:  # the same operations compiled
         return compiled.reduce(u, c, u_lo, quarters, split)
     n = np.rint(u / c.quarter)
     if split:
@@ -107,9 +107,8 @@ def core(v, c: Constants, v_lo=None):
     mu, rho = c.mu, c.rho
     cc = np.multiply(mu[-1], t, out=np.empty(np.broadcast_shapes(np.shape(mu[-1]), np.shape(t))))
     r, x = np.empty(cc.shape), np.empty(cc.shape)
-    if cc.size >= COMPILED_FROM:
-        from . import compiled  # the same operations compiled (numba's import only here)
-
+    compiled = compiled_for(cc.size)
+    if compiled is not None:  # the same operations compiled
         cc, d = compiled.recurrence(cc, mu, rho)
     else:
         d = _recurrence(cc, mu, rho, r, x)

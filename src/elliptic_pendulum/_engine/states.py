@@ -126,6 +126,7 @@ def _solve(th, v, w0):
     if size <= CHUNK:
         public, p = _chunk(th, v, w0)
         return public, p
+    _landen.load_compiled(size)
     flat = [np.ravel(x) for x in (th, v, w0)]
     parts = [_chunk(*(x[i:i + CHUNK] for x in flat)) for i in range(0, size, CHUNK)]
     levels = max(len(p.landen.mu) for _, p in parts)
