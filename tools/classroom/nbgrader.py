@@ -46,6 +46,10 @@ c = get_config()  # noqa: F821
 c.CourseDirectory.course_id = "{course}"
 # Each assignment's folder holds its notebook and the self-check package it imports.
 c.CourseDirectory.root = "."
+# After a cell's reply, the kernel's "idle" can reach a busy grading machine later than
+# the 4 s nbgrader waits by default, and nbgrader then fails the whole notebook (seen once
+# in this project's tests); a cell's own limit stays nbgrader's 30 s.
+c.Execute.iopub_timeout = 30
 '''
 
 
