@@ -114,7 +114,7 @@ def grade(build: Path, tmp_path_factory: pytest.TempPathFactory) -> dict:
          course.COURSE_ID, *points], capture_output=True, text=True, timeout=600)
     assert proc.returncode == 0, proc.stderr[-3000:]
     scores = json.loads(proc.stdout)
-    return {"folder": folder, "points": points, "scores": scores}
+    return {"folder": folder, "points": points, "scores": scores, "venv": grader_venv}
 
 
 @pytest.fixture(scope="session")
@@ -172,3 +172,23 @@ def test_autograde_gives_the_solutions_full_marks_and_the_blank_release_none(
     print(json.dumps({"assignments": len(graded["points"]), "autograded cells": total,
                       "autograded points": auto,
                       "manual points": sum(m for _, m in graded["points"].values())}))
+
+
+SETTING = """
+import sys
+from nbgrader.preprocessors import Execute
+from traitlets.config.loader import PyFileConfigLoader
+config = PyFileConfigLoader("nbgrader_config.py", path=sys.argv[1]).load_config()
+print(Execute().iopub_timeout, Execute(config=config).iopub_timeout)
+"""
+
+
+def test_nbgrader_reads_the_course_s_wait_for_a_kernel_s_output(graded: dict) -> None:
+    """The course folder's config, as nbgrader's own loader and class read it, waits 30 s
+    for a kernel's output after a cell (nbgrader's default, 4 s, once failed a notebook on
+    a busy machine); a misspelt class or setting would leave the default."""
+    proc = subprocess.run([str(graded["venv"] / "bin" / "python"), "-c", SETTING,
+                           str(graded["folder"])], capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 0, proc.stderr[-3000:]
+    default, course_value = map(int, proc.stdout.split())
+    assert default < course_value == 30
