@@ -32,8 +32,8 @@ BIG = agm.COMPILED_FROM + 905  # compiled once loaded, and not a multiple of any
 @pytest.fixture(autouse=True)
 def spy(monkeypatch):
     """Load the compiled loops (as a large call does), and count the calls of each."""
-    from elliptic_pendulum._engine import compiled
-
+    agm.load_compiled(agm.LOAD_FROM)
+    compiled = agm.compiled_for(agm.COMPILED_FROM)
     calls: dict[str, int] = {}
 
     def counted(name):
@@ -202,6 +202,36 @@ def test_numba_is_loaded_only_by_a_large_call(large):
     out = subprocess.run([sys.executable, "-W", "error", "-c", code], capture_output=True,
                          text=True, check=True).stdout.split()
     assert out == ["False", "False", "True"]
+
+
+_RACE = f"""
+import threading, numpy as np, elliptic_pendulum as ep
+rng = np.random.default_rng(9)
+u, k = rng.uniform(-5, 5, 4096), rng.uniform(0, 1, 4096)
+before = ep.sn(u, k)
+done = threading.Event()
+def load():
+    ep.sn(rng.uniform(-5, 5, {agm.LOAD_FROM}), 0.5)
+    done.set()
+loader = threading.Thread(target=load)
+loader.start()
+calls = 0
+while not done.is_set():
+    assert ep.sn(u, k).tobytes() == before.tobytes()
+    calls += 1
+loader.join()
+assert ep.sn(u, k).tobytes() == before.tobytes()
+print(calls)
+"""
+
+
+def test_a_thread_runs_while_another_loads_the_compiled_loops():
+    """numba's module is in sys.modules from the first line of its import: a piece in
+    another thread must not take it before its loops exist (it then ran NumPy's passes)."""
+    out = subprocess.run([sys.executable, "-W", "error", "-c", _RACE], capture_output=True,
+                         text=True)
+    assert out.returncode == 0, out.stderr[-3000:]
+    assert int(out.stdout) > 0  # the other thread did run during the load
 
 
 _RUN = f"""

@@ -11,7 +11,6 @@ modulus has a cached twin on Python floats, to the bit.
 from __future__ import annotations
 
 import importlib
-import sys
 from functools import lru_cache
 from typing import Any, NamedTuple
 
@@ -72,18 +71,21 @@ COMPILED_FROM = 2048
 #: points 3 to 15 ms: so the plots and grids of a lesson (up to some 20000 points) never wait
 #: for numba, and a large computation, or any piece after it, runs compiled.
 LOAD_FROM = 2 ** 16
-_COMPILED = f"{__package__}.compiled"
+# The compiled loops once their import has finished (another thread may still be inside it:
+# the module is in sys.modules from its first line, its loops only from its last).
+_compiled: Any = None
 
 
 def load_compiled(size: int) -> None:
     """Load the compiled loops for a call on ``size`` elements, if it is that large."""
-    if size >= LOAD_FROM and _COMPILED not in sys.modules:
-        importlib.import_module(_COMPILED)
+    global _compiled
+    if size >= LOAD_FROM and _compiled is None:
+        _compiled = importlib.import_module(f"{__package__}.compiled")
 
 
 def compiled_for(size: int) -> Any:
     """Return :mod:`.compiled` if a piece of ``size`` elements is to run it, else None."""
-    return sys.modules.get(_COMPILED) if size >= COMPILED_FROM else None
+    return _compiled if size >= COMPILED_FROM else None
 
 
 def _constants(kc: Any, kc_lo: Any = 0.0) -> Constants:
